@@ -1,0 +1,21 @@
+# Turns every GLSL file into an entry of a C++ table at build time, keyed by the name
+# that #include uses: "rng.glsl" for shaders/rng.glsl, "shapes/sphere.glsl" for src/shapes/.
+function(pt_embed_glsl out_var)
+  file(GLOB_RECURSE skeleton CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/shaders/*.glsl")
+  file(GLOB_RECURSE snippets CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/src/*.glsl")
+  set(entries "")
+  foreach(f IN LISTS skeleton)
+    file(RELATIVE_PATH key "${CMAKE_SOURCE_DIR}/shaders" "${f}")
+    list(APPEND entries "${key}=${f}")
+  endforeach()
+  foreach(f IN LISTS snippets)
+    file(RELATIVE_PATH key "${CMAKE_SOURCE_DIR}/src" "${f}")
+    list(APPEND entries "${key}=${f}")
+  endforeach()
+  set(out "${CMAKE_BINARY_DIR}/generated/embedded_glsl.cpp")
+  add_custom_command(OUTPUT "${out}"
+    COMMAND ${CMAKE_COMMAND} "-DOUT=${out}" "-DENTRIES=${entries}" -P "${CMAKE_SOURCE_DIR}/cmake/EmbedGlslScript.cmake"
+    DEPENDS ${skeleton} ${snippets} "${CMAKE_SOURCE_DIR}/cmake/EmbedGlslScript.cmake"
+    COMMENT "Embedding GLSL sources" VERBATIM)
+  set(${out_var} "${out}" PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,95 @@
+// integrator.glsl: the progressive path tracer's fragment program. Each fragment traces
+// u_spp camera paths through its pixel and blends their mean into the running mean of
+// the previous pass (ping-pong). Unbiased: next-event estimation to sphere lights,
+// combined with BSDF sampling by the power heuristic; Russian roulette after 3 bounces.
+uniform highp sampler2D u_accum;
+uniform float u_blend;       // weight of this pass: spp / (samples so far + spp)
+uniform int u_spp;           // samples per pixel in this pass
+uniform int u_sample_base;   // index of this pass's first sample
+uniform int u_max_bounces;   // scattering events per path
+uniform int u_nee;           // 1: next-event estimation + MIS; 0: BSDF sampling only
+uniform vec3 u_cam_pos;
+uniform vec3 u_cam_right;    // scaled by tan(fov/2) * aspect
+uniform vec3 u_cam_up;       // scaled by tan(fov/2)
+uniform vec3 u_cam_fwd;
+uniform vec2 u_size;
+uniform vec3 u_env_color;
+
+out vec4 o_accum;
+
+vec3 trace_path(Ray r) {
+  vec3 L = vec3(0.0);
+  vec3 beta = vec3(1.0);
+  float prev_pdf = 0.0;
+  bool prev_delta = true;
+  vec3 prev_p = r.o;
+  for (int bounce = 0;; ++bounce) {
+    Hit h = scene_intersect(r);
+    if (h.id < 0) {
+      L += beta * u_env_color;
+      break;
+    }
+    ShapeRec s = load_shape(h.id);
+    MaterialRec m = load_material(s.material);
+    vec3 p = r.o + h.t * r.d;
+    bool entering = dot(r.d, h.n) < 0.0;
+#ifdef HAS_MAT_EMIT
+    if (m.kind == MAT_EMIT) {
+      if (entering) {
+        float w = 1.0;
+        if (u_nee != 0 && !prev_delta && s.light >= 0) w = power_heuristic(prev_pdf, light_pdf(s.light, prev_p));
+        L += beta * m.emission * w;
+      }
+      break;
+    }
+#endif
+    if (bounce >= u_max_bounces) break;
+    vec3 n = entering ? h.n : -h.n;  // faces the side the ray came from
+    Frame fr = frame_from(n);
+    vec3 wo = to_local(fr, -r.d);
+    vec3 u_light = vec3(rand01(), rand01(), rand01());
+    if (u_nee != 0 && u_num_lights > 0 && !material_is_delta(m)) {
+      LightSample ls;
+      if (light_sample(p, u_light, ls)) {
+        float pdf_b;
+        vec3 f = material_eval(m, wo, to_local(fr, ls.wi), entering, pdf_b);
+        if (max3(f) > 0.0) {
+          Hit sh = scene_intersect(Ray(offset_origin(p, n, ls.wi), ls.wi));
+          if (sh.id == ls.shape) L += beta * f * ls.radiance * (power_heuristic(ls.pdf, pdf_b) / ls.pdf);
+        }
+      }
+    }
+    BsdfSample bs;
+    if (!material_sample(m, wo, entering, vec3(rand01(), rand01(), rand01()), bs)) break;
+    beta *= bs.weight;
+    prev_pdf = bs.pdf;
+    prev_delta = bs.delta;
+    prev_p = p;
+    vec3 wi = from_local(fr, bs.wi);
+    r = Ray(offset_origin(p, n, wi), wi);
+    if (bounce >= 3) {
+      float q = min(max3(beta), 0.95);
+      if (rand01() >= q) break;
+      beta /= q;
+    }
+  }
+  return L;
+}
+
+void main() {
+  ivec2 px = ivec2(gl_FragCoord.xy);
+  vec3 sum = vec3(0.0);
+  float sum_l2 = 0.0;
+  for (int s = 0; s < u_spp; ++s) {
+    rng_init(uvec2(px), uint(u_sample_base + s));
+    vec2 ndc = (vec2(px) + vec2(rand01(), rand01())) / u_size * 2.0 - 1.0;
+    vec3 d = normalize(u_cam_fwd + ndc.x * u_cam_right + ndc.y * u_cam_up);
+    vec3 c = trace_path(Ray(u_cam_pos, d));
+    sum += c;
+    float l = luminance(c);
+    sum_l2 += l * l;
+  }
+  // rgb: mean radiance; a: mean squared luminance (for the per-pixel variance).
+  vec4 cur = vec4(sum, sum_l2) / float(u_spp);
+  o_accum = u_blend >= 1.0 ? cur : mix(texelFetch(u_accum, px, 0), cur, u_blend);
+}

@@ -1,0 +1,89 @@
+#include "core/image.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/file_io.h"
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#define STBI_ONLY_HDR
+#define STBI_ONLY_PNG
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#pragma GCC diagnostic ignored "-Wshadow"
+#endif
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+namespace pt {
+namespace {
+
+void append(void* ctx, void* data, int size) {
+  auto* out = static_cast<std::vector<uint8_t>*>(ctx);
+  const auto* p = static_cast<const uint8_t*>(data);
+  out->insert(out->end(), p, p + size);
+}
+
+}  // namespace
+
+bool write_png(const std::string& path, int w, int h, const std::vector<uint8_t>& rgba) {
+  std::vector<uint8_t> bytes;
+  const uint8_t* last_row = rgba.data() + size_t(h - 1) * w * 4;
+  if (!stbi_write_png_to_func(append, &bytes, w, h, 4, last_row, -w * 4)) return false;
+  return write_file_atomic(path, bytes.data(), bytes.size());
+}
+
+bool write_hdr(const std::string& path, int w, int h, const std::vector<float>& rgba) {
+  std::vector<float> rgb(size_t(w) * h * 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) rgb[(size_t(y) * w + x) * 3 + c] = rgba[(size_t(h - 1 - y) * w + x) * 4 + c];
+  std::vector<uint8_t> bytes;
+  if (!stbi_write_hdr_to_func(append, &bytes, w, h, 3, rgb.data())) return false;
+  return write_file_atomic(path, bytes.data(), bytes.size());
+}
+
+bool read_hdr(const std::string& path, int* w, int* h, std::vector<float>* rgba) {
+  const auto bytes = read_file(path);
+  if (!bytes) return false;
+  int n = 0;
+  float* p = stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes->data()), int(bytes->size()), w, h, &n, 4);
+  if (!p) return false;
+  rgba->assign(size_t(*w) * *h * 4, 0.0f);
+  for (int y = 0; y < *h; ++y)
+    for (int i = 0; i < *w * 4; ++i) (*rgba)[size_t(*h - 1 - y) * *w * 4 + i] = p[size_t(y) * *w * 4 + i];
+  stbi_image_free(p);
+  return true;
+}
+
+ImageStats image_stats(const std::vector<float>& rgba) {
+  ImageStats s;
+  s.min_lum = std::numeric_limits<double>::infinity();
+  s.max_lum = -s.min_lum;
+  const size_t n = rgba.size() / 4;
+  for (size_t i = 0; i < n; ++i) {
+    const float* p = &rgba[i * 4];
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+      ++s.bad;
+      continue;
+    }
+    s.mean += glm::dvec3(p[0], p[1], p[2]);
+    const double l = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    s.min_lum = std::min(s.min_lum, l);
+    s.max_lum = std::max(s.max_lum, l);
+  }
+  if (n > size_t(s.bad)) s.mean /= double(n - size_t(s.bad));
+  return s;
+}
+
+}  // namespace pt

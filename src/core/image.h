@@ -1,0 +1,25 @@
+// Image files: tone-mapped PNG and linear Radiance HDR, written atomically; simple
+// statistics used by the CLI and the tests.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace pt {
+
+// Pixels are RGBA, rows bottom to top (GL order); files are written top to bottom.
+bool write_png(const std::string& path, int w, int h, const std::vector<uint8_t>& rgba);
+bool write_hdr(const std::string& path, int w, int h, const std::vector<float>& rgba);
+// Reads a Radiance .hdr (or anything stb_image reads as float) into RGBA, rows bottom to top.
+bool read_hdr(const std::string& path, int* w, int* h, std::vector<float>* rgba);
+
+struct ImageStats {
+  glm::dvec3 mean{0.0};
+  long bad = 0;  // NaN or Inf values
+  double min_lum = 0.0, max_lum = 0.0;
+};
+ImageStats image_stats(const std::vector<float>& rgba);
+
+}  // namespace pt

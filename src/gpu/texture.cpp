@@ -1,0 +1,45 @@
+#include "gpu/texture.h"
+
+namespace pt {
+
+Texture::Texture(int w, int h, GLenum internal_format, const float* data) : w_(w), h_(h) {
+  glGenTextures(1, &id_);
+  glBindTexture(GL_TEXTURE_2D, id_);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  const GLenum type = internal_format == GL_RGBA8 ? GL_UNSIGNED_BYTE
+                      : internal_format == GL_RGBA16F ? GL_HALF_FLOAT
+                                                       : GL_FLOAT;
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal_format), w, h, 0, GL_RGBA, type,
+               type == GL_FLOAT ? data : nullptr);
+}
+
+void Texture::bind(int unit) const {
+  glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+  glBindTexture(GL_TEXTURE_2D, id_);
+}
+
+void Texture::reset() {
+  if (id_) glDeleteTextures(1, &id_);
+  id_ = 0;
+}
+
+Framebuffer::Framebuffer(const Texture& color) {
+  glGenFramebuffers(1, &id_);
+  glBindFramebuffer(GL_FRAMEBUFFER, id_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+}
+
+bool Framebuffer::complete() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, id_);
+  return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+void Framebuffer::reset() {
+  if (id_) glDeleteFramebuffers(1, &id_);
+  id_ = 0;
+}
+
+}  // namespace pt

@@ -1,0 +1,61 @@
+// RAII float textures and framebuffers: the only GL objects the renderer owns.
+#pragma once
+#include <utility>
+
+#include "gpu/gl.h"
+
+namespace pt {
+
+class Texture {
+ public:
+  Texture() = default;
+  // RGBA float texture, nearest filtering; `data` may be null.
+  Texture(int w, int h, GLenum internal_format, const float* data);
+  ~Texture() { reset(); }
+  Texture(Texture&& o) noexcept : id_(std::exchange(o.id_, 0u)), w_(o.w_), h_(o.h_) {}
+  Texture& operator=(Texture&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, 0u);
+      w_ = o.w_;
+      h_ = o.h_;
+    }
+    return *this;
+  }
+  Texture(const Texture&) = delete;
+  Texture& operator=(const Texture&) = delete;
+  GLuint id() const { return id_; }
+  int width() const { return w_; }
+  int height() const { return h_; }
+  void bind(int unit) const;
+
+ private:
+  void reset();
+  GLuint id_ = 0;
+  int w_ = 0, h_ = 0;
+};
+
+class Framebuffer {
+ public:
+  Framebuffer() = default;
+  explicit Framebuffer(const Texture& color);
+  ~Framebuffer() { reset(); }
+  Framebuffer(Framebuffer&& o) noexcept : id_(std::exchange(o.id_, 0u)) {}
+  Framebuffer& operator=(Framebuffer&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, 0u);
+    }
+    return *this;
+  }
+  Framebuffer(const Framebuffer&) = delete;
+  Framebuffer& operator=(const Framebuffer&) = delete;
+  GLuint id() const { return id_; }
+  bool complete() const;
+
+ private:
+  void reset();
+  GLuint id_ = 0;
+};
+
+}  // namespace pt

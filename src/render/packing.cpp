@@ -1,0 +1,42 @@
+#include "render/packing.h"
+
+namespace pt {
+
+PackedScene pack_scene(const Scene& scene) {
+  PackedScene p;
+  for (const Shape& s : scene.shapes) {
+    namespace f = shape_rec;
+    const int i = p.shapes.add();
+    p.shapes.set(i, f::kind, int(s.kind));
+    p.shapes.set(i, f::material, s.material);
+    p.shapes.set(i, f::light, s.light);
+    p.shapes.set(i, f::a, s.a);
+    p.shapes.set(i, f::radius, s.radius);
+    p.shapes.set(i, f::b, s.b);
+    p.shapes.set(i, f::c, s.c);
+  }
+  for (const Material& m : scene.materials) {
+    namespace f = material_rec;
+    const int i = p.materials.add();
+    p.materials.set(i, f::kind, int(m.kind));
+    p.materials.set(i, f::roughness, m.glossiness);
+    p.materials.set(i, f::sampling, m.montecarlo);
+    p.materials.set(i, f::tint, m.tint);
+    p.materials.set(i, f::ior_n, m.ior.x);
+    p.materials.set(i, f::ior_k, m.ior.y);
+    p.materials.set(i, f::emission, m.emission);
+    p.materials.set(i, f::eta_outer, m.outer_ior);
+    p.materials.set(i, f::eta_inner, m.inner_ior);
+  }
+  for (const Light& l : scene.lights) {
+    namespace f = light_rec;
+    const int i = p.lights.add();
+    p.lights.set(i, f::center, l.position);
+    p.lights.set(i, f::radius, l.radius);
+    p.lights.set(i, f::radiance, l.radiance());
+    p.lights.set(i, f::shape, l.shape);
+  }
+  return p;
+}
+
+}  // namespace pt

@@ -1,0 +1,91 @@
+// The packed layouts of scene data in RGBA32F textures, declared once. The packer writes
+// through these constants and the shader generator emits the GLSL struct and loader
+// from the same lists, so the two sides cannot disagree.
+//
+//   F(glsl type, field, texel, first component)
+#pragma once
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#define PT_SHAPE_RECORD(F)                                   \
+  F(int, kind, 0, 0) F(int, material, 0, 1) F(int, light, 0, 2) \
+  F(vec3, a, 1, 0) F(float, radius, 1, 3)                    \
+  F(vec3, b, 2, 0)                                           \
+  F(vec3, c, 3, 0)
+
+#define PT_MATERIAL_RECORD(F)                                               \
+  F(int, kind, 0, 0) F(float, roughness, 0, 1) F(float, sampling, 0, 2)     \
+  F(vec3, tint, 1, 0) F(float, ior_n, 1, 3)                                 \
+  F(vec3, emission, 2, 0) F(float, ior_k, 2, 3)                             \
+  F(float, eta_outer, 3, 0) F(float, eta_inner, 3, 1)
+
+#define PT_LIGHT_RECORD(F)                        \
+  F(vec3, center, 0, 0) F(float, radius, 0, 3)   \
+  F(vec3, radiance, 1, 0) F(int, shape, 1, 3)
+
+namespace pt {
+
+// Data textures are this many texels wide; a record never straddles a row because
+// every record's texel count divides it.
+inline constexpr int kDataWidth = 1024;
+
+struct Field {
+  const char* type;
+  const char* name;
+  int texel;
+  int comp;
+  int width;
+};
+
+constexpr int glsl_width(const char* t) { return t[0] == 'v' ? t[3] - '0' : 1; }
+
+struct RecordLayout {
+  const char* name;  // GLSL: struct <Name>Rec, load_<name>(int), sampler u_<name>_data
+  int texels;
+  std::vector<Field> fields;
+};
+
+#define PT_FIELD_CONST(t, n, tex, comp) inline constexpr Field n{#t, #n, tex, comp, glsl_width(#t)};
+#define PT_FIELD_REF(t, n, tex, comp) n,
+namespace shape_rec {
+inline constexpr int kTexels = 4;
+PT_SHAPE_RECORD(PT_FIELD_CONST)
+}
+namespace material_rec {
+inline constexpr int kTexels = 4;
+PT_MATERIAL_RECORD(PT_FIELD_CONST)
+}
+namespace light_rec {
+inline constexpr int kTexels = 2;
+PT_LIGHT_RECORD(PT_FIELD_CONST)
+}
+
+const RecordLayout& shape_layout();
+const RecordLayout& material_layout();
+const RecordLayout& light_layout();
+
+// GLSL for one layout: the struct, the sampler uniform and the loader function.
+std::string glsl_record(const RecordLayout& layout);
+
+// A growable array of records in texel order, ready to upload as kDataWidth x rows.
+class RecordBuffer {
+ public:
+  explicit RecordBuffer(int texels_per_record) : texels_(texels_per_record) {}
+  int add();  // appends a zeroed record, returns its index
+  void set(int rec, const Field& f, float v);
+  void set(int rec, const Field& f, glm::vec3 v);
+  void set(int rec, const Field& f, int v) { set(rec, f, float(v)); }
+  int count() const { return count_; }
+  int rows() const;  // at least 1
+  // Padded to rows() * kDataWidth texels of 4 floats.
+  std::vector<float> texels() const;
+
+ private:
+  int texels_;
+  int count_ = 0;
+  std::vector<float> data_;
+};
+
+}  // namespace pt

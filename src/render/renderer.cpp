@@ -1,0 +1,169 @@
+#include "render/renderer.h"
+
+#include "render/camera.h"
+#include "render/packing.h"
+
+namespace pt {
+namespace {
+
+enum Unit { kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3 };
+
+Texture upload(const RecordBuffer& b) {
+  const std::vector<float> t = b.texels();
+  return Texture(kDataWidth, b.rows(), GL_RGBA32F, t.data());
+}
+
+}  // namespace
+
+Renderer::Renderer() {
+  glGenVertexArrays(1, &vao_);
+  display_ = Program(fullscreen_vertex(), generate_display());
+  // Float render targets need EXT_color_buffer_float on WebGL 2 / GLES 3.0. Without it we
+  // try half floats (the running mean keeps ~3 significant digits), and otherwise stop
+  // with a message: an 8-bit accumulator cannot hold a converging HDR estimate.
+  for (GLenum fmt : {GLenum(GL_RGBA32F), GLenum(GL_RGBA16F)}) {
+    Texture t(4, 4, fmt, nullptr);
+    Framebuffer f(t);
+    if (f.complete()) {
+      accum_format_ = fmt;
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      resize(1, 1);
+      return;
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  throw GlError("this GPU cannot render to floating-point textures (EXT_color_buffer_float is missing)");
+}
+
+Renderer::~Renderer() {
+  if (vao_) glDeleteVertexArrays(1, &vao_);
+}
+
+void Renderer::set_scene(const Scene& scene) {
+  const Features f = Features::of(scene);
+  auto& slot = cache_[f.key()];
+  if (!slot) {
+    auto c = std::make_unique<CachedProgram>();
+    c->source = generate_integrator(f);
+    c->program = Program(fullscreen_vertex(), c->source);
+    slot = std::move(c);
+  }
+  integrator_ = &slot->program;
+  source_ = &slot->source;
+  const PackedScene p = pack_scene(scene);
+  shape_tex_ = upload(p.shapes);
+  material_tex_ = upload(p.materials);
+  light_tex_ = upload(p.lights);
+  num_shapes_ = p.shapes.count();
+  num_lights_ = p.lights.count();
+  dot_weight_ = scene.dot_weight;
+  env_color_ = scene.environment.color;
+  camera_ = scene.camera;
+  restart();
+}
+
+void Renderer::set_camera(const Camera& camera) {
+  camera_ = camera;
+  restart();
+}
+
+void Renderer::set_settings(const RenderSettings& s) {
+  RenderSettings a = s, b = settings_;
+  a.tonemap = b.tonemap;  // display-only fields do not invalidate the estimate
+  a.exposure = b.exposure;
+  a.sample_limit = b.sample_limit;
+  a.spp_per_pass = b.spp_per_pass;
+  if (!(a == b)) restart();
+  settings_ = s;
+}
+
+void Renderer::resize(int width, int height) {
+  if (width == width_ && height == height_) return;
+  width_ = width;
+  height_ = height;
+  for (int i = 0; i < 2; ++i) {
+    accum_[i] = Texture(width, height, accum_format_, nullptr);
+    fbo_[i] = Framebuffer(accum_[i]);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  restart();
+}
+
+int Renderer::step() {
+  if (!integrator_ || converged()) return 0;
+  int spp = settings_.spp_per_pass < 1 ? 1 : settings_.spp_per_pass;
+  if (settings_.sample_limit > 0 && samples_ + spp > settings_.sample_limit) spp = settings_.sample_limit - samples_;
+  Program& p = *integrator_;
+  p.use();
+  const CameraBasis cb = camera_basis(camera_, float(width_) / float(height_));
+  p.set("u_accum", int(kAccumUnit));
+  p.set("u_shape_data", int(kShapeUnit));
+  p.set("u_material_data", int(kMaterialUnit));
+  p.set("u_light_data", int(kLightUnit));
+  p.set("u_num_shapes", num_shapes_);
+  p.set("u_num_lights", num_lights_);
+  p.set("u_max_bounces", settings_.max_bounces);
+  p.set("u_nee", settings_.nee ? 1 : 0);
+  p.set("u_dot_weight", dot_weight_ ? 1 : 0);
+  p.set("u_spp", spp);
+  p.set("u_sample_base", samples_);
+  p.set("u_blend", float(spp) / float(samples_ + spp));
+  p.set("u_cam_pos", cb.position);
+  p.set("u_cam_fwd", cb.forward);
+  p.set("u_cam_right", cb.right);
+  p.set("u_cam_up", cb.up);
+  p.set("u_size", glm::vec2(float(width_), float(height_)));
+  p.set("u_env_color", env_color_);
+  accum_[cur_].bind(kAccumUnit);
+  shape_tex_.bind(kShapeUnit);
+  material_tex_.bind(kMaterialUnit);
+  light_tex_.bind(kLightUnit);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_[1 - cur_].id());
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glBindVertexArray(vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  cur_ = 1 - cur_;
+  samples_ += spp;
+  return spp;
+}
+
+void Renderer::display(int x, int y) const {
+  Program& p = const_cast<Program&>(display_);
+  p.use();
+  p.set("u_accum", int(kAccumUnit));
+  p.set("u_tonemap", int(settings_.tonemap));
+  p.set("u_exposure", settings_.exposure);
+  p.set("u_offset", glm::ivec2(x, y));
+  accum_[cur_].bind(kAccumUnit);
+  glViewport(x, y, width_, height_);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glBindVertexArray(vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+std::vector<float> Renderer::read_radiance() const {
+  std::vector<float> out(size_t(width_) * height_ * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur_].id());
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return out;
+}
+
+std::vector<uint8_t> Renderer::read_display() const {
+  Texture t(width_, height_, GL_RGBA8, nullptr);
+  Framebuffer f(t);
+  glBindFramebuffer(GL_FRAMEBUFFER, f.id());
+  display(0, 0);
+  std::vector<uint8_t> out(size_t(width_) * height_ * 4);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return out;
+}
+
+}  // namespace pt

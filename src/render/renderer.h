@@ -1,0 +1,86 @@
+// The progressive integrator: ping-pong accumulation of the running mean of radiance in
+// float textures, one pass = u_spp samples per pixel. Display applies the tone map.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "gpu/program.h"
+#include "gpu/texture.h"
+#include "render/tonemap.h"
+#include "scene/scene.h"
+#include "shadergen/shadergen.h"
+
+namespace pt {
+
+struct RenderSettings {
+  int max_bounces = 8;   // scattering events per path (seed: 8, range 1..16)
+  int spp_per_pass = 1;  // samples per pixel in one draw
+  int sample_limit = 0;  // stop after this many samples per pixel; 0 = never
+  bool nee = true;       // next-event estimation with MIS (off: BSDF sampling only)
+  ToneMap tonemap = ToneMap::Aces;
+  float exposure = 1.0f;
+  bool operator==(const RenderSettings&) const = default;
+};
+
+class Renderer {
+ public:
+  Renderer();  // needs a current GL ES 3.0 / WebGL 2 context
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Uploads the scene's data; compiles a program only for a feature set not seen before.
+  void set_scene(const Scene& scene);
+  void set_camera(const Camera& camera);
+  void set_settings(const RenderSettings& s);
+  void resize(int width, int height);
+  void restart() { samples_ = 0; }
+
+  // Renders one pass (unless the sample limit is reached). Returns samples added.
+  int step();
+  // Tone-mapped image into the bound draw framebuffer at viewport (x, y, w, h) = size().
+  void display(int x, int y) const;
+
+  int samples() const { return samples_; }
+  bool converged() const { return settings_.sample_limit > 0 && samples_ >= settings_.sample_limit; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const RenderSettings& settings() const { return settings_; }
+  const Camera& camera() const { return camera_; }
+  GLenum accum_format() const { return accum_format_; }
+  const ShaderSource& integrator_source() const { return *source_; }
+  double compile_ms() const { return integrator_ ? integrator_->compile_ms() : 0.0; }
+
+  // Linear radiance (RGB) and mean squared luminance (A), rows bottom to top.
+  std::vector<float> read_radiance() const;
+  // Tone-mapped 8-bit RGBA, rows bottom to top.
+  std::vector<uint8_t> read_display() const;
+
+ private:
+  struct CachedProgram {
+    ShaderSource source;
+    Program program;
+  };
+  Program* integrator_ = nullptr;
+  const ShaderSource* source_ = nullptr;
+  std::unordered_map<uint64_t, std::unique_ptr<CachedProgram>> cache_;
+  Program display_;
+  Texture shape_tex_, material_tex_, light_tex_;
+  Texture accum_[2];
+  Framebuffer fbo_[2];
+  GLenum accum_format_ = GL_RGBA32F;
+  GLuint vao_ = 0;
+  int cur_ = 0;
+  int samples_ = 0;
+  int width_ = 0, height_ = 0;
+  int num_shapes_ = 0, num_lights_ = 0;
+  bool dot_weight_ = true;
+  glm::vec3 env_color_{0.5f};
+  Camera camera_;
+  RenderSettings settings_;
+};
+
+}  // namespace pt

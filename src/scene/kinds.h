@@ -1,0 +1,59 @@
+// The one list per kind. Every shape and material is named here exactly once; the XML
+// loader, the scene model, the texture packing, the shader generator and the tests all
+// iterate these lists. Adding a kind = its files (parser, shapes/<name>.glsl or
+// materials/<name>.glsl, test) plus one line here.
+//
+//   X(Enum, glsl_name, "XmlElement")
+#pragma once
+
+#define PT_SHAPE_KINDS(X)                   \
+  X(Sphere, sphere, "Sphere")               \
+  X(Box, box, "Box")                        \
+  X(Plane, plane, "Plane")                  \
+  X(Triangle, triangle, "Triangle")
+
+// Material kinds are what a surface does with light. Attenuate is not a kind: it is a
+// modifier that multiplies the tint of the material it wraps (any depth of nesting).
+// Absorb is the inner half of Emit and has no kind of its own either.
+#define PT_MATERIAL_KINDS(X)                          \
+  X(Diffuse, diffuse, "Diffuse")                      \
+  X(Metal, metal, "Metal")                            \
+  X(Transmit, transmit, "Transmit")                   \
+  X(SmoothDielectric, smooth_dielectric, "SmoothDielectric") \
+  X(Emit, emit, "Emit")
+
+namespace pt {
+
+enum class ShapeKind : int {
+#define PT_X(e, g, x) e,
+  PT_SHAPE_KINDS(PT_X)
+#undef PT_X
+};
+enum class MaterialKind : int {
+#define PT_X(e, g, x) e,
+  PT_MATERIAL_KINDS(PT_X)
+#undef PT_X
+};
+
+struct KindInfo {
+  const char* glsl;  // snippet name and function suffix: shapes/sphere.glsl, intersect_sphere
+  const char* xml;   // element name in scene files
+};
+
+inline constexpr KindInfo kShapeKinds[] = {
+#define PT_X(e, g, x) {#g, x},
+    PT_SHAPE_KINDS(PT_X)
+#undef PT_X
+};
+inline constexpr KindInfo kMaterialKinds[] = {
+#define PT_X(e, g, x) {#g, x},
+    PT_MATERIAL_KINDS(PT_X)
+#undef PT_X
+};
+inline constexpr int kNumShapeKinds = int(sizeof(kShapeKinds) / sizeof(kShapeKinds[0]));
+inline constexpr int kNumMaterialKinds = int(sizeof(kMaterialKinds) / sizeof(kMaterialKinds[0]));
+
+inline const KindInfo& info(ShapeKind k) { return kShapeKinds[int(k)]; }
+inline const KindInfo& info(MaterialKind k) { return kMaterialKinds[int(k)]; }
+
+}  // namespace pt

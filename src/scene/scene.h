@@ -1,0 +1,70 @@
+// The scene model: plain data, filled by the XML loader, read by the packer and the UI.
+// Units are the scene file's own. Radiance of emitters: see docs/scene-format.md
+// ("intensity" is radiance per unit colour, the same map for lights and Emit).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/kinds.h"
+
+namespace pt {
+
+struct Material {
+  MaterialKind kind = MaterialKind::Diffuse;
+  glm::vec3 tint{1.0f};       // product of enclosing Attenuate colours and the material's colour
+  glm::vec3 emission{0.0f};   // Emit: radiance
+  glm::vec2 ior{1.5f, 0.0f};  // Metal: complex IOR (n, k); dielectrics: n in .x
+  float glossiness = 0.0f;    // Metal: 0 mirror .. 1 rough (GGX alpha = glossiness^2)
+  float montecarlo = 1.0f;    // Metal: 1 samples the microfacet distribution, 0 the cosine lobe
+  float outer_ior = 1.0f;     // Transmit / SmoothDielectric: medium outside the surface
+  float inner_ior = 1.5f;     // medium inside
+  int line = 0;               // scene-file line, for messages
+};
+
+struct Shape {
+  ShapeKind kind = ShapeKind::Sphere;
+  // Sphere: a = center, radius.  Box: a = min, b = max (normalised).
+  // Plane: a = unit normal, radius = d (dot(normal, p) = d).  Triangle: a, b, c = v0, v1, v2.
+  glm::vec3 a{0.0f}, b{0.0f}, c{0.0f};
+  float radius = 0.0f;
+  int material = 0;
+  int light = -1;  // index into Scene::lights when this shape is a light
+  bool dynamic = false;
+  int line = 0;
+};
+
+// A <Light>: an emissive sphere. lights[0] is the one the UI controls.
+struct Light {
+  glm::vec3 position{0.0f};
+  float radius = 1.0f;
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;
+  int shape = -1;  // its sphere in Scene::shapes
+  glm::vec3 radiance() const { return color * intensity; }
+};
+
+struct Camera {
+  glm::vec3 position{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float yaw = 0.0f;    // degrees
+  float pitch = 0.0f;  // degrees
+  float fov_y = 45.0f;
+};
+
+struct Environment {
+  glm::vec3 color{0.5f};  // constant radiance seen by rays that leave the scene
+};
+
+struct Scene {
+  std::string path;
+  Camera camera;
+  Environment environment;
+  bool dot_weight = true;  // SceneLevel dotWeight: cosine-weighted (true) or uniform diffuse sampling
+  std::vector<Light> lights;
+  std::vector<Shape> shapes;
+  std::vector<Material> materials;
+};
+
+}  // namespace pt

@@ -1,0 +1,277 @@
+// The XML scene loader. Element names dispatch through the kind lists in kinds.h; each
+// kind has one parse_<name> function below. Strict: unknown elements and attributes
+// are errors with their line.
+#include "scene/xml_loader.h"
+
+#include <cmath>
+#include <cstring>
+
+#include <tinyxml2.h>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "scene/xml_attrs.h"
+
+namespace pt {
+namespace {
+
+using tinyxml2::XMLElement;
+
+// ---- shapes ------------------------------------------------------------------------
+void parse_sphere(XmlAttrs& a, Shape& s) {
+  s.a = a.vec3("center");
+  s.radius = a.number("radius");
+  if (!(s.radius > 0.0f)) a.fail("radius must be positive");
+}
+
+void parse_box(XmlAttrs& a, Shape& s) {
+  const glm::vec3 p = a.vec3("min"), q = a.vec3("max");
+  // Files written for the original program give min > max on some axes: normalise.
+  s.a = glm::min(p, q);
+  s.b = glm::max(p, q);
+  if (s.a.x == s.b.x && s.a.y == s.b.y && s.a.z == s.b.z) a.fail("box has no extent");
+}
+
+void parse_plane(XmlAttrs& a, Shape& s) {
+  const glm::vec3 n = a.vec3("normal");
+  const float d = a.number("d");
+  const float len = glm::length(n);
+  if (!(len > 0.0f) || !std::isfinite(len)) a.fail("plane normal must be non-zero");
+  s.a = n / len;  // d = dot(normal, p0) scales with the normal's length
+  s.radius = d / len;
+}
+
+void parse_triangle(XmlAttrs& a, Shape& s) {
+  s.a = a.vec3("v0");
+  s.b = a.vec3("v1");
+  s.c = a.vec3("v2");
+  if (!(glm::length(glm::cross(s.b - s.a, s.c - s.a)) > 0.0f)) a.fail("triangle has zero area");
+}
+
+struct ShapeParser {
+  const char* xml;
+  ShapeKind kind;
+  void (*parse)(XmlAttrs&, Shape&);
+};
+constexpr ShapeParser kShapeParsers[] = {
+#define PT_X(e, g, x) {x, ShapeKind::e, &parse_##g},
+    PT_SHAPE_KINDS(PT_X)
+#undef PT_X
+};
+
+// ---- materials ---------------------------------------------------------------------
+struct Loader;
+void parse_diffuse(Loader&, XmlAttrs&, const XMLElement*, Material&) {}
+void parse_metal(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
+void parse_transmit(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
+void parse_smooth_dielectric(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
+void parse_emit(Loader&, XmlAttrs& a, const XMLElement* e, Material& m);
+
+struct MaterialParser {
+  const char* xml;
+  MaterialKind kind;
+  void (*parse)(Loader&, XmlAttrs&, const XMLElement*, Material&);
+  bool has_children;  // whether the element wraps further elements
+};
+constexpr MaterialParser kMaterialParsers[] = {
+#define PT_X(e, g, x) {x, MaterialKind::e, &parse_##g, MaterialKind::e == MaterialKind::Emit},
+    PT_MATERIAL_KINDS(PT_X)
+#undef PT_X
+};
+
+float positive_ior(XmlAttrs& a, const char* name, float fallback) {
+  const float v = a.number(name, fallback);
+  if (!(v > 0.0f) || v > 100.0f) a.fail(std::string("'") + name + "' must be in (0, 100]");
+  return v;
+}
+
+void parse_metal(Loader&, XmlAttrs& a, const XMLElement*, Material& m) {
+  if (a.has("iorComplex") && a.has("ior")) a.fail("give either 'iorComplex' or 'ior', not both");
+  if (a.has("iorComplex")) {
+    m.ior = a.vec2("iorComplex");
+    if (!(m.ior.x > 0.0f) || m.ior.y < 0.0f) a.fail("'iorComplex' needs n > 0 and k >= 0");
+  } else {
+    m.ior = glm::vec2(positive_ior(a, "ior", 1.5f), 0.0f);
+  }
+  m.glossiness = a.number("glossiness", 0.0f);
+  if (m.glossiness < 0.0f || m.glossiness > 1.0f) a.fail("'glossiness' must be in [0, 1]");
+  m.montecarlo = a.number("montecarlo", 1.0f);
+  if (m.montecarlo < 0.0f || m.montecarlo > 1.0f) a.fail("'montecarlo' must be in [0, 1]");
+  m.tint *= a.vec3("color", glm::vec3(1.0f));
+}
+
+void parse_transmit(Loader&, XmlAttrs& a, const XMLElement*, Material& m) {
+  m.outer_ior = positive_ior(a, "outerIor", 1.0f);
+  m.inner_ior = positive_ior(a, "innerIor", 1.5f);
+}
+
+void parse_smooth_dielectric(Loader&, XmlAttrs& a, const XMLElement*, Material& m) {
+  m.outer_ior = 1.0f;
+  m.inner_ior = positive_ior(a, "ior", 1.5f);
+  m.tint *= a.vec3("color", glm::vec3(1.0f));
+}
+
+// <Emit><Absorb intensity=".." color=".."/></Emit>: an emitter that ends the path.
+void parse_emit(Loader&, XmlAttrs& a, const XMLElement* e, Material& m) {
+  a.finish();
+  const XMLElement* absorb = e->FirstChildElement();
+  if (!absorb || std::strcmp(absorb->Name(), "Absorb") != 0 || absorb->NextSiblingElement())
+    a.fail("<Emit> must contain exactly one <Absorb intensity=\"..\" color=\"..\"/>");
+  XmlAttrs b(absorb, a.file());
+  const float intensity = b.number("intensity");
+  const glm::vec3 color = b.vec3("color", glm::vec3(1.0f));
+  if (intensity < 0.0f || glm::any(glm::lessThan(color, glm::vec3(0.0f)))) b.fail("intensity and color must be >= 0");
+  b.finish();
+  if (absorb->FirstChildElement()) b.fail("<Absorb> takes no child elements");
+  m.emission = color * intensity;
+}
+
+struct Loader {
+  std::string file;
+  Scene scene;
+
+  [[noreturn]] void fail(const XMLElement* e, const std::string& what) {
+    throw InputError(file, e ? e->GetLineNum() : 0, what);
+  }
+
+  // Parses one material element (and whatever it wraps); returns its index.
+  int material(const XMLElement* e, glm::vec3 tint) {
+    if (!std::strcmp(e->Name(), "Attenuate")) {
+      XmlAttrs a(e, file);
+      const glm::vec3 c = a.vec3("color");
+      if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(c, glm::vec3(1.0f))))
+        a.fail("'color' components must be in [0, 1]");
+      a.finish();
+      const XMLElement* inner = e->FirstChildElement();
+      if (!inner || inner->NextSiblingElement()) a.fail("<Attenuate> must wrap exactly one material");
+      return material(inner, tint * c);
+    }
+    for (const MaterialParser& p : kMaterialParsers) {
+      if (std::strcmp(e->Name(), p.xml) != 0) continue;
+      Material m;
+      m.kind = p.kind;
+      m.tint = tint;
+      m.line = e->GetLineNum();
+      XmlAttrs a(e, file);
+      p.parse(*this, a, e, m);
+      a.finish();
+      if (!p.has_children && e->FirstChildElement()) a.fail("takes no child elements");
+      scene.materials.push_back(m);
+      return int(scene.materials.size()) - 1;
+    }
+    fail(e, "unknown material <" + std::string(e->Name()) + ">");
+  }
+
+  void shape(const XMLElement* e) {
+    for (const ShapeParser& p : kShapeParsers) {
+      if (std::strcmp(e->Name(), p.xml) != 0) continue;
+      Shape s;
+      s.kind = p.kind;
+      s.line = e->GetLineNum();
+      XmlAttrs a(e, file);
+      p.parse(a, s);
+      s.dynamic = a.boolean("isDynamic", false);
+      a.finish();
+      const XMLElement* m = e->FirstChildElement();
+      if (!m || m->NextSiblingElement()) a.fail("needs exactly one material element inside");
+      s.material = material(m, glm::vec3(1.0f));
+      scene.shapes.push_back(s);
+      return;
+    }
+    fail(e, "unknown object <" + std::string(e->Name()) + ">");
+  }
+
+  void camera(const XMLElement* e) {
+    XmlAttrs a(e, file);
+    Camera& c = scene.camera;
+    c.position = a.vec3("position");
+    c.up = a.vec3("up", glm::vec3(0.0f, 1.0f, 0.0f));
+    if (!(glm::length(c.up) > 0.0f)) a.fail("'up' must be non-zero");
+    c.up = glm::normalize(c.up);
+    c.yaw = a.number("yaw", 0.0f);
+    c.pitch = a.number("pitch", 0.0f);
+    if (std::abs(c.pitch) >= 90.0f) a.fail("'pitch' must be within (-90, 90) degrees");
+    a.finish();
+    if (e->FirstChildElement()) a.fail("takes no child elements");
+  }
+
+  void light(const XMLElement* e) {
+    XmlAttrs a(e, file);
+    Light l;
+    l.position = a.vec3("position");
+    l.radius = a.number("radius", 1.0f);
+    l.color = a.vec3("color", glm::vec3(1.0f));
+    l.intensity = a.number("intensity", 1.0f);
+    if (!(l.radius > 0.0f)) a.fail("'radius' must be positive");
+    if (l.intensity < 0.0f || glm::any(glm::lessThan(l.color, glm::vec3(0.0f)))) a.fail("intensity and color must be >= 0");
+    a.finish();
+    if (e->FirstChildElement()) a.fail("takes no child elements");
+    // A light is an emissive sphere that next-event estimation also samples.
+    Material m;
+    m.kind = MaterialKind::Emit;
+    m.emission = l.radiance();
+    m.line = e->GetLineNum();
+    scene.materials.push_back(m);
+    Shape s;
+    s.kind = ShapeKind::Sphere;
+    s.a = l.position;
+    s.radius = l.radius;
+    s.material = int(scene.materials.size()) - 1;
+    s.light = int(scene.lights.size());
+    s.dynamic = true;
+    s.line = e->GetLineNum();
+    l.shape = int(scene.shapes.size());
+    scene.shapes.push_back(s);
+    scene.lights.push_back(l);
+  }
+
+  void root(const XMLElement* r) {
+    if (!r || std::strcmp(r->Name(), "SceneLevel") != 0) fail(r, "the root element must be <SceneLevel>");
+    XmlAttrs a(r, file);
+    scene.dot_weight = a.boolean("dotWeight", true);
+    a.finish();
+    bool have_camera = false, have_objects = false;
+    for (const XMLElement* e = r->FirstChildElement(); e; e = e->NextSiblingElement()) {
+      const char* n = e->Name();
+      if (!std::strcmp(n, "Camera")) {
+        if (have_camera) fail(e, "a second <Camera>");
+        have_camera = true;
+        camera(e);
+      } else if (!std::strcmp(n, "Light")) {
+        light(e);
+      } else if (!std::strcmp(n, "Objects")) {
+        if (have_objects) fail(e, "a second <Objects>");
+        have_objects = true;
+        XmlAttrs(e, file).finish();
+        for (const XMLElement* o = e->FirstChildElement(); o; o = o->NextSiblingElement()) shape(o);
+      } else {
+        fail(e, "unknown element <" + std::string(n) + "> in <SceneLevel>");
+      }
+    }
+    if (!have_camera) fail(r, "<SceneLevel> needs a <Camera>");
+    if (scene.shapes.empty()) fail(r, "the scene has no objects and no lights");
+  }
+};
+
+}  // namespace
+
+Scene load_scene_text(const std::string& text, const std::string& path) {
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+    const char* msg = doc.ErrorStr();
+    throw InputError(path, doc.ErrorLineNum(), std::string("malformed XML: ") + (msg ? msg : "parse error"));
+  }
+  Loader l;
+  l.file = path;
+  l.scene.path = path;
+  l.root(doc.RootElement());
+  return std::move(l.scene);
+}
+
+Scene load_scene_file(const std::string& path) {
+  const auto text = read_file(path);
+  if (!text) throw InputError(path, 0, "cannot open the scene file");
+  return load_scene_text(*text, path);
+}
+
+}  // namespace pt

@@ -1,0 +1,43 @@
+// Assembles GLSL ES 3.00 programs from the features a scene uses: per kind, never per
+// object. Objects are data (see render/records.h); a program depends only on Features.
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace pt {
+
+struct Features {
+  uint32_t shapes = 0;     // bit i: ShapeKind i is present
+  uint32_t materials = 0;  // bit i: MaterialKind i is present
+  bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
+  bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
+  uint64_t key() const { return uint64_t(shapes) | uint64_t(materials) << 32; }
+  static Features of(const Scene& scene);
+};
+
+// A program's text after include resolution, and the files that its "#line L S"
+// directives number S (0 is the generated text), so logs can name the snippet file.
+struct ShaderSource {
+  std::string text;
+  std::vector<std::string> files;
+  // Rewrites "0:12:" / "ERROR: 3:45:" locations in a compiler log to "file:line:".
+  std::string map_log(const std::string& log) const;
+};
+
+class ShaderGenError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Expands #include "name" recursively, each file once; unknown names throw.
+ShaderSource resolve_includes(const std::string& root_text, const std::string& root_name);
+
+ShaderSource generate_integrator(const Features& f);
+ShaderSource generate_display();
+ShaderSource fullscreen_vertex();
+
+}  // namespace pt
