@@ -24,7 +24,8 @@ const char* kUsage =
     "  --bounces N       scattering events per path, 1..64 (default 8)\n"
     "  --spp-per-pass N  samples per draw; default adapts to keep each draw near 40 ms\n"
     "  --tonemap NAME    none linear reinhard filmic srgb uncharted2 aces (default aces)\n"
-    "  --exposure X      multiplier before the tone map (default 1)\n"
+    "  --exposure X      multiplier before the tone map (default 1); 'auto' maps the\n"
+    "                    log-average luminance to 0.18\n"
     "  --no-nee          BSDF sampling only (no next-event estimation / MIS)\n"
     "Environment: PT_EGL_SOFTWARE=1 forces Mesa's software renderer.\n";
 
@@ -54,6 +55,7 @@ int render(int argc, char** argv) {
   const std::string scene_path = argv[0];
   int spp = 64, width = 512, height = 512, per_pass = 0;
   std::string out = "out.png";
+  bool auto_exposure = false;
   pt::RenderSettings settings;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -77,7 +79,13 @@ int render(int argc, char** argv) {
       const char* v = next();
       if (!pt::tonemap_from_name(v, &settings.tonemap)) usage_error(std::string("unknown tone map: ") + v);
     } else if (a == "--exposure") {
-      settings.exposure = std::strtof(next(), nullptr);
+      const char* v = next();
+      auto_exposure = !std::strcmp(v, "auto");
+      if (!auto_exposure) {
+        char* end = nullptr;
+        settings.exposure = std::strtof(v, &end);
+        if (*end || !(settings.exposure > 0.0f)) usage_error(std::string("bad --exposure: ") + v);
+      }
     } else if (a == "--no-nee") {
       settings.nee = false;
     } else {
@@ -119,6 +127,11 @@ int render(int argc, char** argv) {
   std::printf("rendered %d spp at %dx%d, %d bounces, in %.3f s: %.2f spp/s, %.1f Mpaths/s\n", r.samples(), width, height,
               settings.max_bounces, secs, r.samples() / secs, double(r.samples()) * width * height / secs * 1e-6);
   std::printf("mean radiance: %.6f %.6f %.6f; non-finite pixels: %ld\n", st.mean.x, st.mean.y, st.mean.z, st.bad);
+  if (auto_exposure) {
+    settings.exposure = float(pt::auto_exposure(radiance));
+    r.set_settings(settings);
+    std::printf("auto exposure: %.4f\n", settings.exposure);
+  }
   const bool ok = ends_with(out, ".png") ? pt::write_png(out, width, height, r.read_display())
                                          : pt::write_hdr(out, width, height, radiance);
   if (!ok) {

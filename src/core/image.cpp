@@ -87,3 +87,19 @@ ImageStats image_stats(const std::vector<float>& rgba) {
 }
 
 }  // namespace pt
+
+namespace pt {
+
+double auto_exposure(const std::vector<float>& rgba, double key) {
+  double sum = 0.0;
+  size_t n = 0;
+  for (size_t i = 0; i + 3 < rgba.size(); i += 4) {
+    const double l = 0.2126 * rgba[i] + 0.7152 * rgba[i + 1] + 0.0722 * rgba[i + 2];
+    if (!std::isfinite(l) || l < 0.0) continue;
+    sum += std::log(1e-4 + l);
+    ++n;
+  }
+  return n == 0 ? 1.0 : key / std::exp(sum / double(n));
+}
+
+}  // namespace pt

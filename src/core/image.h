@@ -22,4 +22,8 @@ struct ImageStats {
 };
 ImageStats image_stats(const std::vector<float>& rgba);
 
+// Exposure that maps the image's log-average luminance to `key` (Reinhard et al. 2002,
+// "Photographic tone reproduction"): a display choice, the radiance is untouched.
+double auto_exposure(const std::vector<float>& rgba, double key = 0.18);
+
 }  // namespace pt

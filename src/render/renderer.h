@@ -53,6 +53,7 @@ class Renderer {
   GLenum accum_format() const { return accum_format_; }
   const ShaderSource& integrator_source() const { return *source_; }
   double compile_ms() const { return integrator_ ? integrator_->compile_ms() : 0.0; }
+  size_t programs_compiled() const { return cache_.size(); }
 
   // Linear radiance (RGB) and mean squared luminance (A), rows bottom to top.
   std::vector<float> read_radiance() const;

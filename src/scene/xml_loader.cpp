@@ -116,7 +116,7 @@ void parse_emit(Loader&, XmlAttrs& a, const XMLElement* e, Material& m) {
   a.finish();
   const XMLElement* absorb = e->FirstChildElement();
   if (!absorb || std::strcmp(absorb->Name(), "Absorb") != 0 || absorb->NextSiblingElement())
-    a.fail("<Emit> must contain exactly one <Absorb intensity=\"..\" color=\"..\"/>");
+    a.fail("must contain exactly one <Absorb intensity=\"..\" color=\"..\"/>");
   XmlAttrs b(absorb, a.file());
   const float intensity = b.number("intensity");
   const glm::vec3 color = b.vec3("color", glm::vec3(1.0f));
@@ -143,7 +143,7 @@ struct Loader {
         a.fail("'color' components must be in [0, 1]");
       a.finish();
       const XMLElement* inner = e->FirstChildElement();
-      if (!inner || inner->NextSiblingElement()) a.fail("<Attenuate> must wrap exactly one material");
+      if (!inner || inner->NextSiblingElement()) a.fail("must wrap exactly one material");
       return material(inner, tint * c);
     }
     for (const MaterialParser& p : kMaterialParsers) {

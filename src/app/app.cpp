@@ -1,0 +1,292 @@
+#include "app/app.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <GLFW/glfw3.h>  // key codes only: the ImGui GLFW backend indexes io.KeysDown by them
+#include <imgui.h>
+
+#include "render/camera.h"
+#include "scene/xml_loader.h"
+
+namespace pt {
+namespace {
+
+// Frame pacing. WebGL calls only queue commands, so the CPU time of step() says little
+// about the GPU; but once the GPU falls behind, the browser delays the next animation
+// frame. The interval between frames is the feedback: add passes while frames keep
+// coming near 60 Hz, remove them when they slow down. A step whose CPU time exceeds the
+// budget means the command queue was full (the call blocked on the GPU): stop there.
+constexpr double kFastFrameMs = 20.0;
+constexpr double kSlowFrameMs = 28.0;
+constexpr double kCpuBudgetMs = 12.0;
+constexpr int kMaxPassesPerFrame = 64;
+
+constexpr float kLookDegPerPixel = 0.2f;
+constexpr float kTurnDegPerSecond = 90.0f;
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (const char ch : s) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += ch;
+    }
+  }
+  return out + "\"";
+}
+
+std::string json_number(double v) {
+  if (!std::isfinite(v)) return "null";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+}  // namespace
+
+App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make_unique<Renderer>()) {
+  settings_.sample_limit = options_.sample_limit;
+  renderer_->set_settings(settings_);
+  scan_scenes();
+  if (!load_scene(options_.scene)) {
+    // Nothing rendered yet, so there is no previous scene to keep: fall back to the
+    // default one, but keep showing why the requested scene failed.
+    const std::string why = error_.value_or("");
+    const std::string fallback = AppOptions{}.scene;
+    if (options_.scene != fallback && load_scene(fallback)) error_ = why;
+  }
+}
+
+void App::scan_scenes() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(options_.scene_root, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file() && it->path().extension() == ".xml") scene_files_.push_back(it->path().string());
+  std::sort(scene_files_.begin(), scene_files_.end());
+}
+
+bool App::load_scene(const std::string& path) {
+  try {
+    Scene s = load_scene_file(path);
+    renderer_->set_scene(s);  // throws before changing anything if the program does not build
+    s.path = path;
+    scene_ = std::move(s);
+    error_.reset();
+    return true;
+  } catch (const std::exception& e) {
+    error_ = e.what();
+    return false;
+  }
+}
+
+void App::set_fixed_size(int w, int h) {
+  options_.width = std::max(0, w);
+  options_.height = std::max(0, h);
+}
+
+void App::set_sample_limit(int n) { settings_.sample_limit = std::max(0, n); }
+
+void App::frame(int fb_w, int fb_h, double now_ms) {
+  const double dt_ms = last_frame_ms_ < 0 ? 0.0 : now_ms - last_frame_ms_;
+  last_frame_ms_ = now_ms;
+  if (dt_ms > 0 && dt_ms < 250) frame_ms_avg_ += 0.2 * (dt_ms - frame_ms_avg_);  // ignore stalls (hidden tab)
+
+  const int w = options_.width > 0 ? options_.width : fb_w;
+  const int h = options_.height > 0 ? options_.height : fb_h;
+  renderer_->resize(std::max(1, w), std::max(1, h));
+
+  handle_input(std::min(dt_ms, 100.0) * 1e-3);
+  draw_panel();
+  renderer_->set_settings(settings_);  // restarts only when the estimate changes
+  render_passes(now_ms);
+  present(fb_w, fb_h);
+}
+
+void App::handle_input(double dt_s) {
+  const ImGuiIO& io = ImGui::GetIO();
+  Camera c = renderer_->camera();
+  const glm::vec3 forward = camera_forward(c);
+  const glm::vec3 up = glm::normalize(c.up);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, up));
+  // Scene units differ by orders of magnitude between scenes: move at 1% of the distance
+  // to the origin per 60 Hz frame, at least one unit.
+  const float step = std::max(1.0f, 0.01f * glm::length(c.position));
+  const float move = step * 60.0f * float(dt_s);
+  bool changed = false;
+
+  if (!io.WantCaptureKeyboard) {
+    const auto down = [&](int key) { return io.KeysDown[key]; };
+    glm::vec3 d(0.0f);
+    if (down(GLFW_KEY_W)) d += up;
+    if (down(GLFW_KEY_S)) d -= up;
+    if (down(GLFW_KEY_D)) d += right;
+    if (down(GLFW_KEY_A)) d -= right;
+    if (down(GLFW_KEY_Q)) d += forward;
+    if (down(GLFW_KEY_E)) d -= forward;
+    if (d != glm::vec3(0.0f)) c.position += d * move, changed = true;
+    const float turn = kTurnDegPerSecond * float(dt_s);
+    const float yaw = float(down(GLFW_KEY_RIGHT) - down(GLFW_KEY_LEFT));
+    const float pitch = float(down(GLFW_KEY_UP) - down(GLFW_KEY_DOWN));
+    if (yaw != 0.0f || pitch != 0.0f) c.yaw += yaw * turn, c.pitch += pitch * turn, changed = true;
+  }
+
+  // A drag looks around only if it started on the image, not on a panel.
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse) dragging_ = true;
+  if (!io.MouseDown[ImGuiMouseButton_Left]) dragging_ = false;
+  if (dragging_ && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    c.yaw += io.MouseDelta.x * kLookDegPerPixel;
+    c.pitch -= io.MouseDelta.y * kLookDegPerPixel;
+    changed = true;
+  }
+  if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) {
+    c.position += forward * (io.MouseWheel * 5.0f * step);
+    changed = true;
+  }
+
+  if (changed) {
+    c.pitch = std::clamp(c.pitch, -89.0f, 89.0f);
+    c.yaw = std::fmod(c.yaw + 360.0f, 360.0f);
+    renderer_->set_camera(c);
+  }
+}
+
+void App::draw_panel() {
+  const std::string& root = options_.scene_root;
+  const auto label = [&](const std::string& path) {
+    return path.rfind(root + "/", 0) == 0 ? path.substr(root.size() + 1) : path;
+  };
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Path tracer", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+
+  if (ImGui::BeginCombo("scene", label(scene_.path).c_str())) {
+    for (const std::string& f : scene_files_) {
+      const bool selected = f == scene_.path;
+      if (ImGui::Selectable(label(f).c_str(), selected)) load_scene(f);
+      if (selected) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  if (error_) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::TextUnformatted(error_->c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+  }
+
+  ImGui::SliderInt("bounces", &settings_.max_bounces, 1, 16);
+  if (ImGui::InputInt("sample limit", &settings_.sample_limit, 16, 256)) settings_.sample_limit = std::max(0, settings_.sample_limit);
+  int tonemap = int(settings_.tonemap);
+  if (ImGui::Combo("tone map", &tonemap, kToneMapNames, kNumToneMaps)) settings_.tonemap = ToneMap(tonemap);
+  ImGui::SliderFloat("exposure", &settings_.exposure, 0.01f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+
+  ImGui::Separator();
+  const double end_ms = done_ms_ >= 0 ? done_ms_ : last_frame_ms_;
+  if (settings_.sample_limit > 0)
+    ImGui::Text("samples    %d / %d", renderer_->samples(), settings_.sample_limit);
+  else
+    ImGui::Text("samples    %d", renderer_->samples());
+  ImGui::Text("samples/s  %.1f", samples_per_second_);
+  ImGui::Text("elapsed    %.1f s", std::max(0.0, end_ms - restart_ms_) * 1e-3);
+  ImGui::Text("resolution %d x %d", renderer_->width(), renderer_->height());
+  ImGui::TextDisabled("%s", options_.gl_renderer.c_str());
+  ImGui::End();
+}
+
+void App::render_passes(double now_ms) {
+  if (renderer_->samples() == 0) restart_ms_ = now_ms, done_ms_ = -1.0;
+  const auto t0 = std::chrono::steady_clock::now();
+  int done = 0;
+  while (done < passes_per_frame_ && !renderer_->converged()) {
+    const int added = renderer_->step();
+    if (added == 0) break;
+    rate_samples_ += added;
+    ++done;
+    if (ms_since(t0) > kCpuBudgetMs) break;
+  }
+  // Grow only when this frame used all its passes, else an idle (converged) image would
+  // ratchet the count up and the next restart would start with one very long frame.
+  if (frame_ms_avg_ > kSlowFrameMs) passes_per_frame_ = std::max(1, passes_per_frame_ * 3 / 4);
+  else if (frame_ms_avg_ < kFastFrameMs && done == passes_per_frame_) passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
+
+  if (renderer_->converged() && done_ms_ < 0) done_ms_ = now_ms;
+  if (done == 0 || rate_t0_ms_ < 0) {
+    rate_t0_ms_ = now_ms;  // idle frames are not part of the rate
+    rate_samples_ = 0;
+  } else if (now_ms - rate_t0_ms_ >= 1000.0) {
+    samples_per_second_ = double(rate_samples_) * 1000.0 / (now_ms - rate_t0_ms_);
+    rate_t0_ms_ = now_ms;
+    rate_samples_ = 0;
+  }
+}
+
+void App::present(int fb_w, int fb_h) {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb_w, fb_h);
+  glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const int w = renderer_->width(), h = renderer_->height();
+  if (w == fb_w && h == fb_h) {
+    renderer_->display(0, 0);
+    return;
+  }
+  // A fixed render size: tone-map into an 8-bit target, then scale it to fit the canvas.
+  if (present_tex_.width() != w || present_tex_.height() != h) {
+    present_tex_ = Texture(w, h, GL_RGBA8, nullptr);
+    present_fbo_ = Framebuffer(present_tex_);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, present_fbo_.id());
+  renderer_->display(0, 0);
+  const float s = std::min(float(fb_w) / float(w), float(fb_h) / float(h));
+  const int dw = int(float(w) * s), dh = int(float(h) * s);
+  const int dx = (fb_w - dw) / 2, dy = (fb_h - dh) / 2;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, present_fbo_.id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, w, h, dx, dy, dx + dw, dy + dh, GL_COLOR_BUFFER_BIT, s >= 1.0f ? GL_NEAREST : GL_LINEAR);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb_w, fb_h);
+}
+
+const std::vector<float>& App::radiance_snapshot() {
+  snapshot_ = renderer_->read_radiance();
+  return snapshot_;
+}
+
+std::string App::stats_json() const {
+  // The mean is computed on demand: a read-back stalls the GPU pipeline.
+  const std::vector<float> px = renderer_->read_radiance();
+  double sum[3] = {0, 0, 0};
+  for (size_t i = 0; i + 3 < px.size(); i += 4)
+    for (int k = 0; k < 3; ++k) sum[k] += px[i + k];
+  const double n = std::max<double>(1.0, double(px.size() / 4));
+  std::string j = "{";
+  j += "\"samples\":" + std::to_string(renderer_->samples());
+  j += ",\"sampleLimit\":" + std::to_string(settings_.sample_limit);
+  j += ",\"samplesPerSecond\":" + json_number(samples_per_second_);
+  j += ",\"passesPerFrame\":" + std::to_string(passes_per_frame_);
+  j += ",\"width\":" + std::to_string(renderer_->width());
+  j += ",\"height\":" + std::to_string(renderer_->height());
+  j += std::string(",\"accumFormat\":") + (renderer_->accum_format() == GL_RGBA32F ? "\"rgba32f\"" : "\"rgba16f\"");
+  j += ",\"mean\":[" + json_number(sum[0] / n) + "," + json_number(sum[1] / n) + "," + json_number(sum[2] / n) + "]";
+  j += ",\"scene\":" + json_string(scene_.path);
+  j += ",\"error\":" + (error_ ? json_string(*error_) : std::string("null"));
+  j += ",\"renderer\":" + json_string(options_.gl_renderer);
+  return j + "}";
+}
+
+}  // namespace pt

@@ -1,0 +1,77 @@
+// The interactive application: owns the Renderer, the current scene, the Dear ImGui panel
+// and the camera controls. The platform creates the GL context and the ImGui backends,
+// and calls frame() once per displayed frame between ImGui::NewFrame() and ImGui::Render().
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gpu/texture.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+struct AppOptions {
+  std::string scene_root = "/scenes";                    // searched recursively for *.xml
+  std::string scene = "/scenes/reference/scene2.xml";    // first scene shown
+  int width = 0, height = 0;                             // fixed render size; 0 = framebuffer size
+  int sample_limit = 0;                                  // 0 = unlimited
+  std::string gl_renderer;                               // shown in the panel and the stats
+};
+
+class App {
+ public:
+  // Needs a current WebGL 2 / GLES 3 context. Throws GlError when the GPU cannot render to
+  // float targets (the platform shows that message instead of a blank canvas).
+  explicit App(AppOptions options);
+
+  // One displayed frame into the default framebuffer of size fb_w x fb_h (device
+  // pixels). now_ms: a monotonic clock. Builds the ImGui panel, does not render ImGui.
+  void frame(int fb_w, int fb_h, double now_ms);
+
+  // Test hooks.
+  std::string stats_json() const;                        // see web/index.html: ptStats()
+  void set_fixed_size(int w, int h);                     // 0, 0: follow the framebuffer
+  void set_sample_limit(int n);
+  bool load_scene(const std::string& path);              // false: error() says why
+  const std::vector<float>& radiance_snapshot();         // RGBA float, rows bottom to top
+  const Renderer& renderer() const { return *renderer_; }
+
+ private:
+  void handle_input(double dt_s);
+  void draw_panel();
+  void render_passes(double now_ms);
+  void present(int fb_w, int fb_h);
+  void scan_scenes();
+
+  AppOptions options_;
+  std::unique_ptr<Renderer> renderer_;
+  Scene scene_;
+  RenderSettings settings_;
+  std::vector<std::string> scene_files_;  // paths under options_.scene_root
+  std::optional<std::string> error_;
+
+  // Frame pacing: the number of passes per frame adapts to the interval between frames.
+  double last_frame_ms_ = -1.0;
+  double frame_ms_avg_ = 16.7;
+  int passes_per_frame_ = 1;
+
+  // Progress: samples per second over a sliding window; elapsed time since the restart.
+  double rate_t0_ms_ = -1.0;
+  long rate_samples_ = 0;
+  double samples_per_second_ = 0.0;
+  double restart_ms_ = 0.0, done_ms_ = -1.0;
+
+  // Mouse look: whether the current left-drag started on the canvas (not on the panel).
+  bool dragging_ = false;
+
+  // Offscreen target used when the render size differs from the framebuffer size.
+  Texture present_tex_;
+  Framebuffer present_fbo_;
+
+  std::vector<float> snapshot_;
+};
+
+}  // namespace pt

@@ -1,0 +1,165 @@
+// The web platform: a GLFW window on the page's canvas (WebGL 2), Dear ImGui's GLFW and
+// OpenGL 3 backends, the browser's animation-frame loop, and the hooks the page and the
+// browser tests call (window.ptStats and friends in web/index.html).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include <GLFW/glfw3.h>
+#include <emscripten.h>
+#include <emscripten/html5.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include "app/app.h"
+
+// A message in place of the canvas (web/index.html defines ptShowError).
+EM_JS(void, pt_js_show_error, (const char* message), {
+  const text = UTF8ToString(message);
+  console.warn("pathtracer: " + text);
+  if (typeof ptShowError === "function") ptShowError(text);
+});
+
+// The GPU's name: the unmasked renderer when the browser tells it, else GL_RENDERER.
+// Returns a malloc'ed string.
+EM_JS(char*, pt_js_gl_renderer, (), {
+  const gl = Module.ctx;
+  const info = gl.getExtension("WEBGL_debug_renderer_info");
+  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  const size = lengthBytesUTF8(name) + 1;
+  const ptr = _malloc(size);
+  stringToUTF8(name, ptr, size);
+  return ptr;
+});
+
+namespace {
+
+GLFWwindow* g_window = nullptr;
+std::unique_ptr<pt::App> g_app;
+std::string g_stats;
+float g_ui_scale = 1.0f;
+
+// The canvas fills the window through CSS; its drawing buffer follows in device pixels.
+// GLFW's own resize path is avoided: it requests fullscreen when the size equals the screen.
+void sync_canvas_size(int* w, int* h) {
+  double css_w = 0, css_h = 0;
+  emscripten_get_element_css_size("#canvas", &css_w, &css_h);
+  const double dpr = emscripten_get_device_pixel_ratio();
+  *w = std::max(1, int(std::lround(css_w * dpr)));
+  *h = std::max(1, int(std::lround(css_h * dpr)));
+  int cur_w = 0, cur_h = 0;
+  emscripten_get_canvas_element_size("#canvas", &cur_w, &cur_h);
+  if (cur_w != *w || cur_h != *h) emscripten_set_canvas_element_size("#canvas", *w, *h);
+}
+
+// Emscripten 3.1.6's GLFW passes the DOM's deltaY (pixels, positive = down) as the
+// scroll offset; GLFW and ImGui expect notches, positive = up.
+void scroll_callback(GLFWwindow* window, double dx, double dy) {
+  ImGui_ImplGlfw_ScrollCallback(window, -dx / 100.0, -dy / 100.0);
+}
+
+void frame() {
+  int w = 0, h = 0;
+  sync_canvas_size(&w, &h);
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(float(w), float(h));  // GLFW's window size is not kept in sync (see above)
+  io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
+  ImGui::NewFrame();
+  g_app->frame(w, h, emscripten_get_now());
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+pt::AppOptions parse_args(int argc, char** argv) {
+  pt::AppOptions o;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string key = argv[i], value = argv[i + 1];
+    if (key == "--scene") o.scene = value[0] == '/' ? value : o.scene_root + "/" + value;
+    if (key == "--size" && std::sscanf(value.c_str(), "%dx%d", &o.width, &o.height) != 2) o.width = o.height = 0;
+    if (key == "--limit") o.sample_limit = std::max(0, std::atoi(value.c_str()));
+  }
+  return o;
+}
+
+void init_imgui() {
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini in the page's memory file system
+  ImGui::StyleColorsDark();
+  ImGui::GetStyle().WindowRounding = 4.0f;
+  ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 0.85f;
+  // Mouse and display are in device pixels: scale the UI instead of the framebuffer.
+  g_ui_scale = std::max(1.0f, float(emscripten_get_device_pixel_ratio()));
+  ImGui::GetStyle().ScaleAllSizes(g_ui_scale);
+  ImFontConfig font;
+  font.SizePixels = std::round(13.0f * g_ui_scale);
+  io.Fonts->AddFontDefault(&font);
+  ImGui_ImplGlfw_InitForOpenGL(g_window, true);
+  glfwSetScrollCallback(g_window, scroll_callback);
+  ImGui_ImplOpenGL3_Init("#version 300 es");
+}
+
+}  // namespace
+
+extern "C" {
+
+EMSCRIPTEN_KEEPALIVE const char* pt_stats_json() {
+  g_stats = g_app ? g_app->stats_json() : std::string("null");
+  return g_stats.c_str();
+}
+
+EMSCRIPTEN_KEEPALIVE void pt_set_size(int w, int h) {
+  if (g_app) g_app->set_fixed_size(w, h);
+}
+
+EMSCRIPTEN_KEEPALIVE void pt_set_sample_limit(int n) {
+  if (g_app) g_app->set_sample_limit(n);
+}
+
+EMSCRIPTEN_KEEPALIVE int pt_load_scene(const char* path) { return g_app && g_app->load_scene(path) ? 1 : 0; }
+
+// RGBA float radiance of the current estimate; *count receives the number of floats.
+EMSCRIPTEN_KEEPALIVE const float* pt_radiance(int* count) {
+  if (!g_app) return *count = 0, nullptr;
+  const std::vector<float>& px = g_app->radiance_snapshot();
+  *count = int(px.size());
+  return px.data();
+}
+
+}  // extern "C"
+
+int main(int argc, char** argv) {
+  pt::AppOptions options = parse_args(argc, argv);
+  if (!glfwInit()) return pt_js_show_error("GLFW could not start."), 1;
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+  glfwWindowHint(GLFW_ALPHA_BITS, 0);  // an opaque canvas: the page behind never shows through
+  glfwWindowHint(GLFW_DEPTH_BITS, 0);
+  glfwWindowHint(GLFW_STENCIL_BITS, 0);
+  int w = 0, h = 0;
+  sync_canvas_size(&w, &h);
+  g_window = glfwCreateWindow(w, h, "pathtracer", nullptr, nullptr);
+  if (!g_window) return pt_js_show_error("This browser or GPU does not support WebGL 2."), 1;
+  glfwMakeContextCurrent(g_window);
+  sync_canvas_size(&w, &h);
+  init_imgui();
+
+  char* renderer = pt_js_gl_renderer();
+  options.gl_renderer = renderer ? renderer : "";
+  std::free(renderer);
+  try {
+    g_app = std::make_unique<pt::App>(options);
+  } catch (const std::exception& e) {
+    pt_js_show_error(e.what());
+    return 1;
+  }
+  emscripten_set_main_loop(frame, 0, true);
+  return 0;
+}

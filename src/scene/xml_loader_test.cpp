@@ -1,0 +1,142 @@
+// Loader tests: the three reference scenes load unmodified with their quirks, and
+// malformed input fails with a message naming file, line and problem.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "scene/xml_loader.h"
+#include "test_paths.h"
+
+using namespace pt;
+
+namespace {
+
+std::string error_of(const std::string& xml) {
+  try {
+    load_scene_text(xml, "bad.xml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+const char* kHead = "<?xml version=\"1.0\"?>\n<SceneLevel>\n<Camera position=\"0 0 10\" up=\"0 1 0\" yaw=\"90\" pitch=\"0\"/>\n";
+
+}  // namespace
+
+TEST_CASE("reference scenes in the repo are byte-identical to the originals", "[loader]") {
+  for (const char* name : {"scene0.xml", "scene1.xml", "scene2.xml", "cube.json"}) {
+    const auto ours = read_file(repo_path("scenes/reference/") + name);
+    REQUIRE(ours);
+    const auto orig = read_file(repo_path("../shared/reference-scenes/") + name);
+    if (orig) CHECK(*ours == *orig);
+  }
+}
+
+TEST_CASE("scene0 loads: plane, boxes, dielectrics, a metal sphere", "[loader]") {
+  const Scene s = load_scene_file(repo_path("scenes/reference/scene0.xml"));
+  REQUIRE(s.lights.size() == 1);
+  CHECK(s.lights[0].intensity == Approx(167));
+  CHECK(s.camera.yaw == Approx(132.5));
+  CHECK(s.camera.up == glm::vec3(0, 1, 0));  // written "0, 1, 0"
+  CHECK(s.dot_weight);
+  // 1 plane + 10 boxes + 1 sphere + the light's sphere
+  CHECK(s.shapes.size() == 13);
+  int boxes = 0, dielectrics = 0;
+  for (const Shape& sh : s.shapes) boxes += sh.kind == ShapeKind::Box;
+  for (const Material& m : s.materials) dielectrics += m.kind == MaterialKind::SmoothDielectric;
+  CHECK(boxes == 10);
+  CHECK(dielectrics == 4);
+  const Material& plane_mat = s.materials[size_t(s.shapes[1].material)];
+  CHECK(plane_mat.kind == MaterialKind::Diffuse);
+  CHECK(plane_mat.tint.x == Approx(0.8f));  // Attenuate folds into the tint
+}
+
+TEST_CASE("scene1: the crystal table with min > max is normalised", "[loader]") {
+  const Scene s = load_scene_file(repo_path("scenes/reference/scene1.xml"));
+  bool found = false;
+  for (const Shape& sh : s.shapes) {
+    if (sh.kind != ShapeKind::Box) continue;
+    CHECK(sh.a.x <= sh.b.x);
+    CHECK(sh.a.y <= sh.b.y);
+    CHECK(sh.a.z <= sh.b.z);
+    if (sh.a.y == Approx(41.49f) && sh.b.y == Approx(42.49f)) found = true;
+  }
+  CHECK(found);
+  int transmit = 0;
+  for (const Material& m : s.materials) transmit += m.kind == MaterialKind::Transmit;
+  CHECK(transmit == 1);
+}
+
+TEST_CASE("scene2: Cornell box with an emissive box", "[loader]") {
+  const Scene s = load_scene_file(repo_path("scenes/reference/scene2.xml"));
+  int emitters = 0;
+  for (const Shape& sh : s.shapes) {
+    const Material& m = s.materials[size_t(sh.material)];
+    if (m.kind == MaterialKind::Emit && sh.light < 0) {
+      ++emitters;
+      CHECK(m.emission == glm::vec3(69.0f));
+    }
+  }
+  CHECK(emitters == 1);
+  const Material& metal = s.materials[size_t(s.shapes[s.shapes.size() - 2].material)];
+  CHECK(metal.kind == MaterialKind::Metal);
+  CHECK(metal.ior == glm::vec2(2.1928f, 3.9379f));
+  CHECK(metal.glossiness == Approx(0.1f));
+}
+
+TEST_CASE("malformed scenes give file, line and problem", "[loader]") {
+  const std::string h = kHead;
+  CHECK(error_of("<SceneLevel><Camera position=\"0 0 0\"></SceneLevel>").rfind("bad.xml:1: malformed XML", 0) == 0);
+  CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\" colour=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>") ==
+        "bad.xml:5: <Sphere>: unknown attribute 'colour'");
+  CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\"><Diffuse/></Sphere></Objects></SceneLevel>") ==
+        "bad.xml:5: <Sphere>: missing attribute 'radius'");
+  CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>") ==
+        "bad.xml:5: <Sphere>: attribute 'center' needs 3 finite numbers: \"0 0\"");
+  CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 nan 0\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>") ==
+        "bad.xml:5: <Sphere>: attribute 'center' needs 3 finite numbers: \"0 nan 0\"");
+  CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"-2\"><Diffuse/></Sphere></Objects></SceneLevel>") ==
+        "bad.xml:5: <Sphere>: radius must be positive");
+  CHECK(error_of(h + "<Objects>\n<Cone/></Objects></SceneLevel>") == "bad.xml:5: unknown object <Cone>");
+  CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\">\n<Velvet/></Sphere></Objects></SceneLevel>") ==
+        "bad.xml:6: unknown material <Velvet>");
+  CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\"></Sphere></Objects></SceneLevel>") ==
+        "bad.xml:5: <Sphere>: needs exactly one material element inside");
+  CHECK(error_of(h + "<Objects>\n<Box min=\"0 0 0\" max=\"1 1 1\">\n<Attenuate color=\"1 0 0\"/></Box></Objects></SceneLevel>") ==
+        "bad.xml:6: <Attenuate>: must wrap exactly one material");
+  CHECK(error_of(h + "<Objects>\n<Box min=\"0 0 0\" max=\"1 1 1\">\n<Emit/></Box></Objects></SceneLevel>") ==
+        "bad.xml:6: <Emit>: must contain exactly one <Absorb intensity=\"..\" color=\"..\"/>");
+  CHECK(error_of(h + "<Objects>\n<Box min=\"0 0 0\" max=\"1 1 1\">\n<Metal glossiness=\"2\"/></Box></Objects></SceneLevel>") ==
+        "bad.xml:6: <Metal>: 'glossiness' must be in [0, 1]");
+  CHECK(error_of(h + "<Objects>\n<Plane normal=\"0 0 0\" d=\"1\"><Diffuse/></Plane></Objects></SceneLevel>") ==
+        "bad.xml:5: <Plane>: plane normal must be non-zero");
+  CHECK(error_of(h + "<Objects>\n<Triangle v0=\"0 0 0\" v1=\"1 1 1\" v2=\"2 2 2\"><Diffuse/></Triangle></Objects></SceneLevel>") ==
+        "bad.xml:5: <Triangle>: triangle has zero area");
+  CHECK(error_of(h + "<Lamp/>\n</SceneLevel>") == "bad.xml:4: unknown element <Lamp> in <SceneLevel>");
+  CHECK(error_of("<?xml version=\"1.0\"?>\n<Scene/>") == "bad.xml:2: the root element must be <SceneLevel>");
+  CHECK(error_of(h + "</SceneLevel>") == "bad.xml:2: the scene has no objects and no lights");
+  CHECK(error_of("<SceneLevel><Objects/></SceneLevel>") == "bad.xml:1: <SceneLevel> needs a <Camera>");
+  CHECK(error_of(h + "<Light position=\"0 0 0\" radius=\"0\"/></SceneLevel>") == "bad.xml:4: <Light>: 'radius' must be positive");
+}
+
+TEST_CASE("a missing scene file is an error naming the file", "[loader]") {
+  try {
+    load_scene_file("/nonexistent/scene.xml");
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()) == "/nonexistent/scene.xml: cannot open the scene file");
+  }
+}
+
+TEST_CASE("vectors accept commas and spaces, nothing else", "[loader]") {
+  const std::string h = kHead;
+  const Scene s = load_scene_text(h + "<Objects><Sphere center=\"1,2 , 3\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>", "x.xml");
+  CHECK(s.shapes[0].a == glm::vec3(1, 2, 3));
+  CHECK(error_of(h + "<Objects><Sphere center=\"1 2 3 4\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>").find("needs 3") !=
+        std::string::npos);
+  CHECK(error_of(h + "<Objects><Sphere center=\"1;2;3\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>").find("needs 3") !=
+        std::string::npos);
+}

@@ -1,0 +1,85 @@
+// Shader generator tests: a program holds the code of the kinds its scene uses and
+// nothing else, its size does not depend on the number of objects, and includes and
+// compiler logs resolve to snippet files.
+#include <catch2/catch.hpp>
+
+#include "scene/xml_loader.h"
+#include "shadergen/shadergen.h"
+#include "test_paths.h"
+
+using namespace pt;
+
+namespace {
+
+bool contains(const std::string& s, const std::string& what) { return s.find(what) != std::string::npos; }
+
+Scene spheres(int n) {
+  std::string xml = "<SceneLevel><Camera position=\"0 0 10\"/><Objects>";
+  for (int i = 0; i < n; ++i)
+    xml += "<Sphere center=\"" + std::to_string(i) + " 0 0\" radius=\"0.5\"><Attenuate color=\"0.5 0.5 0.5\"><Diffuse/></Attenuate></Sphere>";
+  return load_scene_text(xml + "</Objects></SceneLevel>", "spheres.xml");
+}
+
+}  // namespace
+
+TEST_CASE("a spheres-and-diffuse scene carries no other shape or material code", "[shadergen]") {
+  const Features f = Features::of(spheres(3));
+  CHECK(f.has(ShapeKind::Sphere));
+  CHECK(f.has(MaterialKind::Diffuse));
+  const std::string src = generate_integrator(f).text;
+  CHECK(contains(src, "void intersect_sphere("));
+  CHECK(contains(src, "bool sample_diffuse("));
+  for (const char* absent : {"intersect_box", "intersect_plane", "intersect_triangle", "sample_metal", "fresnel_conductor",
+                             "sample_smooth_dielectric", "sample_transmit", "refract_local", "sample_emit"})
+    CHECK_FALSE(contains(src, absent));
+}
+
+TEST_CASE("every kind in the lists brings exactly its own snippet", "[shadergen]") {
+  for (int i = 0; i < kNumShapeKinds; ++i) {
+    Features f;
+    f.shapes = 1u << i;
+    f.materials = 1u;
+    const std::string src = generate_integrator(f).text;
+    for (int j = 0; j < kNumShapeKinds; ++j)
+      CHECK(contains(src, std::string("void intersect_") + kShapeKinds[j].glsl + "(") == (i == j));
+  }
+  for (int i = 0; i < kNumMaterialKinds; ++i) {
+    Features f;
+    f.shapes = 1u;
+    f.materials = 1u << i;
+    const std::string src = generate_integrator(f).text;
+    for (int j = 0; j < kNumMaterialKinds; ++j)
+      CHECK(contains(src, std::string("bool sample_") + kMaterialKinds[j].glsl + "(") == (i == j));
+  }
+}
+
+TEST_CASE("the program does not grow with the number of objects", "[shadergen]") {
+  const Features a = Features::of(spheres(10)), b = Features::of(spheres(1000));
+  CHECK(a.key() == b.key());
+  CHECK(generate_integrator(a).text == generate_integrator(b).text);
+}
+
+TEST_CASE("reference scenes select their kinds", "[shadergen]") {
+  const Features f0 = Features::of(load_scene_file(repo_path("scenes/reference/scene0.xml")));
+  CHECK(f0.has(ShapeKind::Plane));
+  CHECK(f0.has(ShapeKind::Box));
+  CHECK_FALSE(f0.has(ShapeKind::Triangle));
+  CHECK(f0.has(MaterialKind::SmoothDielectric));
+  CHECK_FALSE(f0.has(MaterialKind::Transmit));
+  const Features f1 = Features::of(load_scene_file(repo_path("scenes/reference/scene1.xml")));
+  CHECK(f1.has(MaterialKind::Transmit));
+}
+
+TEST_CASE("includes resolve once each; unknown ones are errors", "[shadergen]") {
+  const ShaderSource s = resolve_includes("#include \"fresnel.glsl\"\n#include \"fresnel.glsl\"\nvoid f() {}\n", "root");
+  CHECK(s.files == std::vector<std::string>{"root", "fresnel.glsl"});
+  CHECK(s.text.find("float fresnel_dielectric(") == s.text.rfind("float fresnel_dielectric("));
+  CHECK_THROWS_WITH(resolve_includes("\n#include \"nope.glsl\"\n", "root"), "root:2: unknown include \"nope.glsl\"");
+}
+
+TEST_CASE("compiler logs name the snippet file and its own line", "[shadergen]") {
+  ShaderSource s;
+  s.files = {"<generated>", "materials/metal.glsl"};
+  CHECK(s.map_log("ERROR: 1:42: 'foo' : undeclared identifier") == "ERROR: materials/metal.glsl:42: 'foo' : undeclared identifier");
+  CHECK(s.map_log("0(7) : error C1008: undefined variable") == "<generated>:7: error C1008: undefined variable");
+}

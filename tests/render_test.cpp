@@ -1,0 +1,144 @@
+// GPU render tests through headless EGL: every kind compiles on the driver, values never
+// recompile, and each reference scene matches its stored reference statistically.
+//
+// Statistical comparison: the accumulator's alpha holds the running mean of squared
+// luminance, so each pixel's variance of the mean is (E[l^2] - E[l]^2) / n. The image is
+// cut into 8x8 tiles; each tile's mean luminance gets a standard error from its pixels,
+// and z = (mean - ref) / sqrt(se^2 + se_ref^2) must stay below kMaxZ in every tile.
+// References: tests/references/<scene>.ref, made by
+//   PT_WRITE_REFERENCES=1 build/native/pt_tests "[reference]"
+// (kRefSpp samples per pixel, same size and settings as the test).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "core/image.h"
+#include "gl_context.h"
+#include "render/renderer.h"
+#include "scene/xml_loader.h"
+#include "test_paths.h"
+
+using namespace pt;
+
+namespace {
+
+constexpr int kSize = 64, kTile = 8, kTiles = kSize / kTile;
+constexpr int kTestSpp = 256, kRefSpp = 16384;
+constexpr double kMaxZ = 5.0;
+
+struct TileStats {
+  double mean[kTiles * kTiles];
+  double se[kTiles * kTiles];
+};
+
+std::vector<float> render(const Scene& scene, int spp, RenderSettings s = {}) {
+  test_gl();
+  Renderer r;
+  r.resize(kSize, kSize);
+  s.sample_limit = spp;
+  s.spp_per_pass = 16;
+  r.set_settings(s);
+  r.set_scene(scene);
+  while (!r.converged()) r.step();
+  return r.read_radiance();
+}
+
+TileStats tile_stats(const std::vector<float>& img, int spp) {
+  TileStats t{};
+  for (int ty = 0; ty < kTiles; ++ty)
+    for (int tx = 0; tx < kTiles; ++tx) {
+      double sum = 0, var = 0;
+      for (int y = ty * kTile; y < (ty + 1) * kTile; ++y)
+        for (int x = tx * kTile; x < (tx + 1) * kTile; ++x) {
+          const float* p = &img[(size_t(y) * kSize + x) * 4];
+          const double l = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+          sum += l;
+          var += std::max(0.0, double(p[3]) - l * l) / spp;
+        }
+      const int n = kTile * kTile;
+      t.mean[ty * kTiles + tx] = sum / n;
+      t.se[ty * kTiles + tx] = std::sqrt(var) / n;
+    }
+  return t;
+}
+
+std::string ref_path(const std::string& scene) { return repo_path("tests/references/" + scene + ".ref"); }
+
+}  // namespace
+
+TEST_CASE("every shape and material kind compiles and links on this GL", "[gpu]") {
+  test_gl();
+  Features all;
+  all.shapes = (1u << kNumShapeKinds) - 1;
+  all.materials = (1u << kNumMaterialKinds) - 1;
+  const ShaderSource src = generate_integrator(all);
+  CHECK_NOTHROW(Program(fullscreen_vertex(), src));
+}
+
+TEST_CASE("editing values re-uploads data and never recompiles", "[gpu]") {
+  test_gl();
+  Scene s = load_scene_file(repo_path("scenes/reference/scene2.xml"));
+  Renderer r;
+  r.resize(8, 8);
+  r.set_scene(s);
+  CHECK(r.programs_compiled() == 1);
+  s.lights[0].intensity = 5.0f;
+  s.materials[0].tint = glm::vec3(0.2f);
+  s.shapes[3].a.x += 1.0f;
+  r.set_scene(s);
+  CHECK(r.programs_compiled() == 1);
+  r.step();
+  CHECK(r.samples() == 1);
+  RenderSettings st;
+  st.max_bounces = 3;
+  r.set_settings(st);
+  CHECK(r.samples() == 0);  // a transport change restarts
+}
+
+TEST_CASE("reference scenes: no NaN/Inf and tile statistics match the reference", "[gpu][render]") {
+  for (const char* name : {"scene0", "scene1", "scene2"}) {
+    DYNAMIC_SECTION(name) {
+      const Scene scene = load_scene_file(repo_path(std::string("scenes/reference/") + name + ".xml"));
+      const std::vector<float> img = render(scene, kTestSpp);
+      const ImageStats st = image_stats(img);
+      REQUIRE(st.bad == 0);
+      const TileStats t = tile_stats(img, kTestSpp);
+      std::ifstream in(ref_path(name));
+      REQUIRE(in.good());
+      int size = 0, spp = 0;
+      in >> size >> spp;
+      REQUIRE(size == kSize);
+      double worst = 0;
+      int worst_tile = -1;
+      for (int i = 0; i < kTiles * kTiles; ++i) {
+        double m = 0, se = 0;
+        in >> m >> se;
+        // The reference has seen far more of the tail of each pixel's distribution (caustics,
+        // fireflies), so its variance, scaled to the test's sample count, is the better
+        // estimate of the test's own standard error; take the larger of the two.
+        const double se_test = std::max(t.se[i], se * std::sqrt(double(spp) / kTestSpp));
+        const double z = std::abs(t.mean[i] - m) / std::sqrt(se_test * se_test + se * se + 1e-12);
+        if (z > worst) worst = z, worst_tile = i;
+      }
+      REQUIRE(in.good());
+      INFO(name << ": worst tile " << worst_tile << " |z| = " << worst);
+      CHECK(worst < kMaxZ);
+    }
+  }
+}
+
+TEST_CASE("write references (run explicitly with PT_WRITE_REFERENCES=1)", "[.reference]") {
+  if (!std::getenv("PT_WRITE_REFERENCES")) return;
+  for (const char* name : {"scene0", "scene1", "scene2"}) {
+    const Scene scene = load_scene_file(repo_path(std::string("scenes/reference/") + name + ".xml"));
+    const TileStats t = tile_stats(render(scene, kRefSpp), kRefSpp);
+    std::ofstream out(ref_path(name));
+    out << kSize << " " << kRefSpp << "\n";
+    out.precision(9);
+    for (int i = 0; i < kTiles * kTiles; ++i) out << t.mean[i] << " " << t.se[i] << "\n";
+  }
+}

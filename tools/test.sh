@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# README command (2): install what is missing, build, run every test.
+#   bash tools/test.sh            native unit + GPU tests (llvmpipe), CLI tests, browser test
+#   PT_SKIP_BROWSER=1 bash tools/test.sh   native tests only
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+start=$(date +%s)
+bash tools/deps.sh "${PT_SKIP_BROWSER:+native}"
+echo "== native build"
+cmake --preset native >/dev/null
+cmake --build --preset native
+echo "== native tests (GL: Mesa llvmpipe unless a GPU is present)"
+ctest --preset native -j2
+if [[ -z "${PT_SKIP_BROWSER:-}" ]]; then
+  echo "== web build"
+  export NODE_PATH=/usr/share/nodejs
+  cmake --preset web >/dev/null
+  cmake --build --preset web
+  echo "== browser test (headless Chromium, WebGL 2 through SwiftShader)"
+  node tests/browser/page_test.mjs --web build/web --native build/native/pathtracer
+fi
+echo "== all tests passed in $(( $(date +%s) - start )) s"
