@@ -1,6 +1,6 @@
 // integrator.glsl: the progressive path tracer's fragment program. Each fragment traces
 // u_spp camera paths through its pixel and blends their mean into the running mean of
-// the previous pass (ping-pong). Unbiased: next-event estimation to sphere lights,
+// the previous pass (ping-pong). Unbiased: next-event estimation to emissive shapes,
 // combined with BSDF sampling by the power heuristic; Russian roulette after 3 bounces.
 uniform highp sampler2D u_accum;
 uniform float u_blend;       // weight of this pass: spp / (samples so far + spp)
@@ -37,7 +37,7 @@ vec3 trace_path(Ray r) {
     if (m.kind == MAT_EMIT) {
       if (entering) {
         float w = 1.0;
-        if (u_nee != 0 && !prev_delta && s.light >= 0) w = power_heuristic(prev_pdf, light_pdf(s.light, prev_p));
+        if (u_nee != 0 && !prev_delta && s.light >= 0) w = power_heuristic(prev_pdf, light_pdf(s, prev_p, r.d, h.t, h.n));
         L += beta * m.emission * w;
       }
       break;

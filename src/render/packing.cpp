@@ -9,7 +9,15 @@ PackedScene pack_scene(const Scene& scene) {
     const int i = p.shapes.add();
     p.shapes.set(i, f::kind, int(s.kind));
     p.shapes.set(i, f::material, s.material);
-    p.shapes.set(i, f::light, s.light);
+    // Emitters of samplable kinds become lights for next-event estimation.
+    const Material& m = scene.materials[size_t(s.material)];
+    int light = -1;
+    if (m.kind == MaterialKind::Emit && info(s.kind).samplable && glm::any(glm::greaterThan(m.emission, glm::vec3(0.0f)))) {
+      light = p.lights.add();
+      p.lights.set(light, light_rec::radiance, m.emission);
+      p.lights.set(light, light_rec::shape, i);
+    }
+    p.shapes.set(i, f::light, light);
     p.shapes.set(i, f::a, s.a);
     p.shapes.set(i, f::radius, s.radius);
     p.shapes.set(i, f::b, s.b);
@@ -27,14 +35,6 @@ PackedScene pack_scene(const Scene& scene) {
     p.materials.set(i, f::emission, m.emission);
     p.materials.set(i, f::eta_outer, m.outer_ior);
     p.materials.set(i, f::eta_inner, m.inner_ior);
-  }
-  for (const Light& l : scene.lights) {
-    namespace f = light_rec;
-    const int i = p.lights.add();
-    p.lights.set(i, f::center, l.position);
-    p.lights.set(i, f::radius, l.radius);
-    p.lights.set(i, f::radiance, l.radiance());
-    p.lights.set(i, f::shape, l.shape);
   }
   return p;
 }

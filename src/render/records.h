@@ -21,9 +21,9 @@
   F(vec3, emission, 2, 0) F(float, ior_k, 2, 3)                             \
   F(float, eta_outer, 3, 0) F(float, eta_inner, 3, 1)
 
-#define PT_LIGHT_RECORD(F)                        \
-  F(vec3, center, 0, 0) F(float, radius, 0, 3)   \
-  F(vec3, radiance, 1, 0) F(int, shape, 1, 3)
+// A light is an emissive shape of a samplable kind; its geometry stays in the shape record.
+#define PT_LIGHT_RECORD(F) \
+  F(vec3, radiance, 0, 0) F(int, shape, 0, 3)
 
 namespace pt {
 
@@ -58,7 +58,7 @@ inline constexpr int kTexels = 4;
 PT_MATERIAL_RECORD(PT_FIELD_CONST)
 }
 namespace light_rec {
-inline constexpr int kTexels = 2;
+inline constexpr int kTexels = 1;
 PT_LIGHT_RECORD(PT_FIELD_CONST)
 }
 

@@ -3,14 +3,16 @@
 // iterate these lists. Adding a kind = its files (parser, shapes/<name>.glsl or
 // materials/<name>.glsl, test) plus one line here.
 //
-//   X(Enum, glsl_name, "XmlElement")
+//   Shapes:    X(Enum, glsl_name, "XmlElement", samplable)  samplable: an emissive one is
+//              light-sampled (its snippet defines sample_light_<name> / pdf_light_<name>)
+//   Materials: X(Enum, glsl_name, "XmlElement")
 #pragma once
 
 #define PT_SHAPE_KINDS(X)                   \
-  X(Sphere, sphere, "Sphere")               \
-  X(Box, box, "Box")                        \
-  X(Plane, plane, "Plane")                  \
-  X(Triangle, triangle, "Triangle")
+  X(Sphere, sphere, "Sphere", true)         \
+  X(Box, box, "Box", true)                  \
+  X(Plane, plane, "Plane", false)           \
+  X(Triangle, triangle, "Triangle", true)
 
 // Material kinds are what a surface does with light. Attenuate is not a kind: it is a
 // modifier that multiplies the tint of the material it wraps (any depth of nesting).
@@ -25,7 +27,7 @@
 namespace pt {
 
 enum class ShapeKind : int {
-#define PT_X(e, g, x) e,
+#define PT_X(e, g, x, l) e,
   PT_SHAPE_KINDS(PT_X)
 #undef PT_X
 };
@@ -38,15 +40,16 @@ enum class MaterialKind : int {
 struct KindInfo {
   const char* glsl;  // snippet name and function suffix: shapes/sphere.glsl, intersect_sphere
   const char* xml;   // element name in scene files
+  bool samplable;    // shapes: emitters of this kind are light-sampled
 };
 
 inline constexpr KindInfo kShapeKinds[] = {
-#define PT_X(e, g, x) {#g, x},
+#define PT_X(e, g, x, l) {#g, x, l},
     PT_SHAPE_KINDS(PT_X)
 #undef PT_X
 };
 inline constexpr KindInfo kMaterialKinds[] = {
-#define PT_X(e, g, x) {#g, x},
+#define PT_X(e, g, x) {#g, x, false},
     PT_MATERIAL_KINDS(PT_X)
 #undef PT_X
 };

@@ -54,7 +54,7 @@ struct ShapeParser {
   void (*parse)(XmlAttrs&, Shape&);
 };
 constexpr ShapeParser kShapeParsers[] = {
-#define PT_X(e, g, x) {x, ShapeKind::e, &parse_##g},
+#define PT_X(e, g, x, l) {x, ShapeKind::e, &parse_##g},
     PT_SHAPE_KINDS(PT_X)
 #undef PT_X
 };

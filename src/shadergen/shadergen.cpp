@@ -20,7 +20,11 @@ const char* find_embedded_glsl(const char* name) {
 Features Features::of(const Scene& scene) {
   Features f;
   for (const Shape& s : scene.shapes) f.shapes |= 1u << int(s.kind);
-  for (const Shape& s : scene.shapes) f.materials |= 1u << int(scene.materials[size_t(s.material)].kind);
+  for (const Shape& s : scene.shapes) {
+    const Material& m = scene.materials[size_t(s.material)];
+    f.materials |= 1u << int(m.kind);
+    if (m.kind == MaterialKind::Emit && info(s.kind).samplable) f.lights |= 1u << int(s.kind);
+  }
   return f;
 }
 
@@ -122,6 +126,8 @@ ShaderSource generate_integrator(const Features& f) {
   g += kind_defines();
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i))) g += "#define HAS_SHAPE_" + upper(kShapeKinds[i].glsl) + " 1\n";
+  for (int i = 0; i < kNumShapeKinds; ++i)
+    if (f.has_light(ShapeKind(i))) g += "#define HAS_LIGHT_" + upper(kShapeKinds[i].glsl) + " 1\n";
   for (int i = 0; i < kNumMaterialKinds; ++i)
     if (f.has(MaterialKind(i))) g += "#define HAS_MAT_" + upper(kMaterialKinds[i].glsl) + " 1\n";
   g += "#include \"common.glsl\"\n";
@@ -152,6 +158,16 @@ ShaderSource generate_integrator(const Features& f) {
     smp += cond + "return sample_" + k + "(m, wo, entering, u, s);\n";
   }
   g += delta + "  return true;\n}\n" + eval + "  pdf = 0.0;\n  return vec3(0.0);\n}\n" + smp + "  return false;\n}\n";
+  // Light sampling over the emitter kinds present (solid-angle densities).
+  std::string lsmp = "bool light_sample_shape(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf) {\n";
+  std::string lpdf = "float light_pdf_shape(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {\n";
+  for (int i = 0; i < kNumShapeKinds; ++i) {
+    if (!f.has_light(ShapeKind(i))) continue;
+    const std::string k = kShapeKinds[i].glsl, cond = "  if (s.kind == SHAPE_" + upper(kShapeKinds[i].glsl) + ") ";
+    lsmp += cond + "return sample_light_" + k + "(s, p, u, wi, pdf);\n";
+    lpdf += cond + "return pdf_light_" + k + "(s, p, wi, t, n);\n";
+  }
+  g += lsmp + "  pdf = 0.0;\n  return false;\n}\n" + lpdf + "  return 0.0;\n}\n";
   g += "#include \"lights.glsl\"\n#include \"integrator.glsl\"\n";
   return resolve_includes(g, "<generated integrator>");
 }

@@ -22,3 +22,42 @@ void intersect_box(ShapeRec s, int id, Ray r, inout Hit h) {
   h.id = id;
   h.n = axis * (inside ? sign(dot(axis, d)) : -sign(dot(axis, d)));
 }
+
+#ifdef HAS_LIGHT_BOX
+// Emissive box: a point chosen uniformly by area on the faces that face p (at most
+// three; only front faces emit), converted to a solid-angle density t^2 / (|cos| A).
+vec3 box_face_areas(ShapeRec s, vec3 p) {
+  vec3 e = s.b - s.a;
+  vec3 visible = vec3(lessThan(p, s.a)) + vec3(greaterThan(p, s.b));
+  return vec3(e.y * e.z, e.x * e.z, e.x * e.y) * visible;
+}
+
+bool sample_light_box(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf) {
+  vec3 area = box_face_areas(s, p);
+  float total = area.x + area.y + area.z;
+  pdf = 0.0;
+  if (total <= 0.0) return false;
+  float pick = u.x * total;
+  int axis = pick < area.x ? 0 : (pick < area.x + area.y ? 1 : 2);
+  float before = axis == 0 ? 0.0 : (axis == 1 ? area.x : area.x + area.y);
+  float v = clamp((pick - before) / area[axis], 0.0, 1.0);
+  // (v, u.y) spans the face: the two axes other than `axis`, in order.
+  vec3 f = axis == 0 ? vec3(0.0, v, u.y) : (axis == 1 ? vec3(v, 0.0, u.y) : vec3(v, u.y, 0.0));
+  vec3 q = mix(s.a, s.b, f);
+  q[axis] = p[axis] > s.b[axis] ? s.b[axis] : s.a[axis];
+  vec3 d = q - p;
+  float t2 = dot(d, d);
+  wi = d * inversesqrt(t2);
+  float cos_l = abs(wi[axis]);
+  if (cos_l <= 0.0) return false;
+  pdf = t2 / (cos_l * total);
+  return true;
+}
+
+float pdf_light_box(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
+  vec3 area = box_face_areas(s, p);
+  float total = area.x + area.y + area.z;
+  float cos_l = abs(dot(n, wi));
+  return total > 0.0 && cos_l > 0.0 ? t * t / (cos_l * total) : 0.0;
+}
+#endif

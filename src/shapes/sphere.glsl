@@ -20,3 +20,27 @@ void intersect_sphere(ShapeRec s, int id, Ray r, inout Hit h) {
   h.id = id;
   h.n = (r.o + t * r.d - s.a) / s.radius;
 }
+
+#ifdef HAS_LIGHT_SPHERE
+// Emissive sphere: directions sampled uniformly inside the cone it subtends from p
+// (pbrt-v4, 6.2.3), which covers exactly its visible part. 1 - cos(theta_max) comes from
+// sin^2 so it stays accurate for small, far lights. No sample from inside the sphere.
+float sphere_cone(ShapeRec s, vec3 p) {
+  vec3 toc = s.a - p;
+  float sin2 = s.radius * s.radius / dot(toc, toc);
+  return sin2 >= 1.0 ? 0.0 : sin2 / (1.0 + sqrt(1.0 - sin2));
+}
+
+bool sample_light_sphere(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf) {
+  float omc = sphere_cone(s, p);
+  pdf = omc > 0.0 ? 1.0 / (TWO_PI * omc) : 0.0;
+  if (omc <= 0.0) return false;
+  wi = from_local(frame_from(normalize(s.a - p)), sample_uniform_cone(u, omc));
+  return true;
+}
+
+float pdf_light_sphere(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
+  float omc = sphere_cone(s, p);
+  return omc > 0.0 ? 1.0 / (TWO_PI * omc) : 0.0;
+}
+#endif
