@@ -33,15 +33,15 @@ vec3 trace_path(Ray r) {
     MaterialRec m = load_material(s.material);
     vec3 p = r.o + h.t * r.d;
     bool entering = dot(r.d, h.n) < 0.0;
-#ifdef HAS_MAT_EMIT
-    if (m.kind == MAT_EMIT) {
-      if (entering) {
-        float w = 1.0;
-        if (u_nee != 0 && !prev_delta && s.light >= 0) w = power_heuristic(prev_pdf, light_pdf(s, prev_p, r.d, h.t, h.n));
-        L += beta * m.emission * w;
-      }
-      break;
+    // Emission from the front side; weighted against light sampling when this shape is a
+    // light and the direction was not a delta-lobe choice.
+    if (entering && max3(m.emission) > 0.0) {
+      float w = 1.0;
+      if (u_nee != 0 && !prev_delta && s.light >= 0) w = power_heuristic(prev_pdf, light_pdf(s, prev_p, r.d, h.t, h.n));
+      L += beta * m.emission * w;
     }
+#ifdef HAS_MAT_EMIT
+    if (m.kind == MAT_EMIT) break;  // Emit+Absorb ends the path
 #endif
     if (bounce >= u_max_bounces) break;
     vec3 n = entering ? h.n : -h.n;  // faces the side the ray came from

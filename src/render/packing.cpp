@@ -10,11 +10,10 @@ PackedScene pack_scene(const Scene& scene) {
     p.shapes.set(i, f::kind, int(s.kind));
     p.shapes.set(i, f::material, s.material);
     // Emitters of samplable kinds become lights for next-event estimation.
-    const Material& m = scene.materials[size_t(s.material)];
     int light = -1;
-    if (m.kind == MaterialKind::Emit && info(s.kind).samplable && glm::any(glm::greaterThan(m.emission, glm::vec3(0.0f)))) {
+    if (is_sampled_light(scene, s)) {
       light = p.lights.add();
-      p.lights.set(light, light_rec::radiance, m.emission);
+      p.lights.set(light, light_rec::radiance, scene.materials[size_t(s.material)].emission);
       p.lights.set(light, light_rec::shape, i);
     }
     p.shapes.set(i, f::light, light);

@@ -67,4 +67,10 @@ struct Scene {
   std::vector<Material> materials;
 };
 
+// An emitter of a samplable kind: next-event estimation samples it as a light.
+inline bool is_sampled_light(const Scene& scene, const Shape& s) {
+  const Material& m = scene.materials[size_t(s.material)];
+  return info(s.kind).samplable && (m.emission.x > 0.0f || m.emission.y > 0.0f || m.emission.z > 0.0f);
+}
+
 }  // namespace pt

@@ -146,6 +146,21 @@ struct Loader {
       if (!inner || inner->NextSiblingElement()) a.fail("must wrap exactly one material");
       return material(inner, tint * c);
     }
+    // <Emit intensity=".." color=".."> around a material that is not <Absorb>: a surface that
+    // emits and also scatters (an extension of the seed's Emit+Absorb; the closed-form tests
+    // use it for walls of albedo rho and emission Le).
+    const XMLElement* first = e->FirstChildElement();
+    if (!std::strcmp(e->Name(), "Emit") && first && std::strcmp(first->Name(), "Absorb") != 0) {
+      XmlAttrs a(e, file);
+      const float intensity = a.number("intensity");
+      const glm::vec3 color = a.vec3("color", glm::vec3(1.0f));
+      if (intensity < 0.0f || glm::any(glm::lessThan(color, glm::vec3(0.0f)))) a.fail("intensity and color must be >= 0");
+      a.finish();
+      if (first->NextSiblingElement()) a.fail("must wrap exactly one material");
+      const int inner = material(first, tint);
+      scene.materials[size_t(inner)].emission += color * intensity;
+      return inner;
+    }
     for (const MaterialParser& p : kMaterialParsers) {
       if (std::strcmp(e->Name(), p.xml) != 0) continue;
       Material m;

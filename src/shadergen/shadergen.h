@@ -38,6 +38,10 @@ class ShaderGenError : public std::runtime_error {
 // Expands #include "name" recursively, each file once; unknown names throw.
 ShaderSource resolve_includes(const std::string& root_text, const std::string& root_name);
 
+// Everything a program for `f` shares, up to and including light sampling: version,
+// kind ids, record loaders, the kinds' snippets and the generated dispatch (unresolved
+// text). The integrator appends its main; the GLSL test harness appends a kernel.
+std::string generate_prelude(const Features& f);
 ShaderSource generate_integrator(const Features& f);
 ShaderSource generate_display();
 ShaderSource fullscreen_vertex();

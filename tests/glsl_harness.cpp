@@ -1,0 +1,53 @@
+#include "glsl_harness.h"
+
+#include "gl_context.h"
+#include "gpu/texture.h"
+#include "render/records.h"
+
+namespace pt {
+
+Features all_features() {
+  Features f;
+  f.shapes = (1u << kNumShapeKinds) - 1;
+  f.materials = (1u << kNumMaterialKinds) - 1;
+  for (int i = 0; i < kNumShapeKinds; ++i)
+    if (kShapeKinds[i].samplable) f.lights |= 1u << i;
+  return f;
+}
+
+GlslKernel::GlslKernel(const std::string& body, const Features& f) {
+  test_gl();
+  const std::string main =
+      "\nuniform highp sampler2D u_input;\nuniform int u_count;\nout vec4 o_out;\n"
+      "void main() {\n  ivec2 px = ivec2(gl_FragCoord.xy);\n  int i = px.y * " +
+      std::to_string(kDataWidth) + " + px.x;\n  o_out = i < u_count ? kernel(texelFetch(u_input, px, 0), i) : vec4(0.0);\n}\n";
+  program_ = Program(fullscreen_vertex(), resolve_includes(generate_prelude(f) + "#line 1\n" + body + main, "<kernel>"));
+}
+
+std::vector<glm::vec4> GlslKernel::run(const std::vector<glm::vec4>& inputs) {
+  const int n = int(inputs.size());
+  const int rows = (n + kDataWidth - 1) / kDataWidth;
+  std::vector<glm::vec4> padded(size_t(rows) * kDataWidth, glm::vec4(0.0f));
+  std::copy(inputs.begin(), inputs.end(), padded.begin());
+  Texture in(kDataWidth, rows, GL_RGBA32F, &padded[0].x);
+  Texture out(kDataWidth, rows, GL_RGBA32F, nullptr);
+  Framebuffer fb(out);
+  GLuint vao = 0;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  program_.use();
+  in.bind(0);
+  program_.set("u_input", 0);
+  program_.set("u_count", n);
+  glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
+  glViewport(0, 0, kDataWidth, rows);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  std::vector<glm::vec4> result(size_t(rows) * kDataWidth);
+  glReadPixels(0, 0, kDataWidth, rows, GL_RGBA, GL_FLOAT, &result[0].x);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteVertexArrays(1, &vao);
+  result.resize(size_t(n));
+  return result;
+}
+
+}  // namespace pt

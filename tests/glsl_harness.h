@@ -1,0 +1,32 @@
+// The GLSL test harness: runs production GLSL over a buffer of inputs on the GPU through
+// headless EGL. A kernel is GLSL text defining
+//     vec4 kernel(vec4 x, int i)
+// compiled after the generated prelude of the given features (so every shape, material,
+// sampling and light function of the real shader is callable by name); it runs once per
+// input in a fullscreen pass into RGBA32F and the outputs are read back.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gpu/program.h"
+#include "shadergen/shadergen.h"
+
+namespace pt {
+
+Features all_features();
+
+class GlslKernel {
+ public:
+  explicit GlslKernel(const std::string& body, const Features& f = all_features());
+  std::vector<glm::vec4> run(const std::vector<glm::vec4>& inputs);
+  std::vector<glm::vec4> run(int n) { return run(std::vector<glm::vec4>(size_t(n), glm::vec4(0.0f))); }
+  // Set uniforms (u_dot_weight, ...) before run().
+  Program& program() { return program_; }
+
+ private:
+  Program program_;
+};
+
+}  // namespace pt

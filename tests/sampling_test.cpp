@@ -1,0 +1,203 @@
+// Chi-square tests of every direction sampler against its own density, on the production
+// GLSL through the harness (Mitsuba's and pbrt's method): 10^6 samples are binned into a
+// (cos theta, phi) histogram over the whole sphere; each cell's expected count integrates
+// the density (5x5 midpoint rule, on the GPU) over the cell; cells expecting fewer than 5
+// are pooled; the test passes when p >= alpha, with alpha = 0.01 Sidak-corrected for
+// kChi2Tests tests. Incident directions include grazing ones (cos theta = 1e-3).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "glsl_harness.h"
+#include "stats.h"
+
+using namespace pt;
+
+namespace {
+
+constexpr int kSamples = 1000000;
+constexpr int kCosBins = 40, kPhiBins = 80, kSub = 5;
+constexpr int kChi2Tests = 19;  // every direction_chi2 call below
+constexpr double kPi = 3.14159265358979323846;
+
+struct DirectionCase {
+  std::string setup;    // GLSL: constants and make_*() helpers used by the two bodies
+  std::string sample;   // GLSL statements: set `vec3 wi` and `bool ok` from rand01()
+  std::string density;  // GLSL expression: density of direction `d` (solid angle)
+  int dot_weight = 1;
+};
+
+Chi2Result direction_chi2(const DirectionCase& c, const char* name) {
+  GlslKernel sampler(c.setup + "\nvec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 12345u), 0u);\n  vec3 wi = vec3(0.0);\n  bool ok = false;\n" +
+                     c.sample + "\n  return ok ? vec4(wi, 1.0) : vec4(0.0);\n}\n");
+  GlslKernel density(c.setup + "\nvec4 kernel(vec4 x, int i) {\n  vec3 d = x.xyz;\n  return vec4(" + c.density + ");\n}\n");
+  sampler.program().use();
+  sampler.program().set("u_dot_weight", c.dot_weight);
+  density.program().use();
+  density.program().set("u_dot_weight", c.dot_weight);
+
+  std::vector<double> observed(kCosBins * kPhiBins, 0.0), expected(kCosBins * kPhiBins, 0.0);
+  for (const glm::vec4& s : sampler.run(kSamples)) {
+    if (s.w == 0.0f) continue;
+    const double z = std::clamp(double(s.z), -1.0, 1.0);
+    double phi = std::atan2(double(s.y), double(s.x));
+    if (phi < 0) phi += 2 * kPi;
+    const int ci = std::min(kCosBins - 1, int((z + 1.0) * 0.5 * kCosBins));
+    const int pi = std::min(kPhiBins - 1, int(phi / (2 * kPi) * kPhiBins));
+    observed[size_t(ci * kPhiBins + pi)] += 1;
+  }
+  // Expected counts: integrate the density over each cell with a kSub x kSub midpoint rule;
+  // cells where that is not enough (near a jump of the density to zero, such as a light's
+  // silhouette, or where it varies by more than 2x, such as a grazing lobe) are integrated
+  // again on a kFine x kFine grid: with 10^6 samples, a 1% error in a busy cell would fail.
+  auto integrate = [&](const std::vector<int>& cells, int sub) {
+    std::vector<glm::vec4> dirs;
+    const double dc = 2.0 / kCosBins / sub, dp = 2 * kPi / kPhiBins / sub;
+    for (int cell : cells)
+      for (int a = 0; a < sub; ++a)
+        for (int b = 0; b < sub; ++b) {
+          const double z = -1.0 + ((cell / kPhiBins) * sub + a + 0.5) * dc;
+          const double phi = ((cell % kPhiBins) * sub + b + 0.5) * dp, r = std::sqrt(std::max(0.0, 1 - z * z));
+          dirs.emplace_back(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z), 0.0f);
+        }
+    const std::vector<glm::vec4> pdf = density.run(dirs);
+    std::vector<glm::dvec3> out;  // per cell: integral, min, max of the samples
+    for (size_t j = 0; j < cells.size(); ++j) {
+      glm::dvec3 acc(0.0, INFINITY, 0.0);
+      for (int k = 0; k < sub * sub; ++k) {
+        const double v = pdf[j * size_t(sub * sub) + size_t(k)].x;
+        acc.x += v * dc * dp;
+        acc.y = std::min(acc.y, v);
+        acc.z = std::max(acc.z, v);
+      }
+      out.push_back(acc);
+    }
+    return out;
+  };
+  constexpr int kFine = 128;
+  std::vector<int> all(kCosBins * kPhiBins);
+  for (int i = 0; i < int(all.size()); ++i) all[size_t(i)] = i;
+  const std::vector<glm::dvec3> coarse = integrate(all, kSub);
+  // A discontinuity can hide between the midpoints of a cell, so any cell next to one
+  // that has a zero sample (and any cell with one) is refined, as are steep cells.
+  auto has_zero = [&](int i) { return coarse[size_t(i)].y == 0.0; };
+  auto has_mass = [&](int i) { return coarse[size_t(i)].z > 0.0; };
+  std::vector<int> refine;
+  for (int i = 0; i < int(all.size()); ++i) {
+    const glm::dvec3 cc = coarse[size_t(i)];
+    bool flag = cc.z > 2.0 * cc.y && has_mass(i);
+    const int ci = i / kPhiBins, pi = i % kPhiBins;
+    for (int dci = -1; dci <= 1 && !flag; ++dci)
+      for (int dpi = -1; dpi <= 1; ++dpi) {
+        const int nc = ci + dci, n = nc * kPhiBins + (pi + dpi + kPhiBins) % kPhiBins;
+        if (nc >= 0 && nc < kCosBins && ((has_mass(i) && has_zero(n)) || (has_zero(i) && has_mass(n)))) flag = true;
+      }
+    if (flag) refine.push_back(i);
+    expected[size_t(i)] = cc.x * kSamples;
+  }
+  const std::vector<glm::dvec3> fine = integrate(refine, kFine);
+  for (size_t k = 0; k < refine.size(); ++k) expected[size_t(refine[k])] = fine[k].x * kSamples;
+  if (std::getenv("PT_CHI2_DEBUG"))
+    for (size_t j = 0; j < expected.size(); ++j)
+      if (std::abs(observed[j] - expected[j]) > 5 * std::sqrt(expected[j] + 1))
+        std::printf("  %s cell cos %zu phi %zu: observed %.0f expected %.1f\n", name, j / kPhiBins, j % kPhiBins, observed[j], expected[j]);
+  const Chi2Result r = chi2_test(observed, expected);
+  std::printf("chi2 %-42s stat %9.1f dof %4d pooled %4d refined %4zu p %.4f\n", name, r.stat, r.dof, r.pooled,
+              refine.size(), r.p_value);
+  return r;
+}
+
+std::string material(const char* kind, float roughness, float sampling) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "MaterialRec make_material() {\n  MaterialRec m;\n  m.kind = %s; m.roughness = %.6f; m.sampling = %.1f;\n"
+                "  m.tint = vec3(1.0); m.ior_n = 0.2; m.ior_k = 3.0; m.emission = vec3(0.0);\n"
+                "  m.eta_outer = 1.0; m.eta_inner = 1.5;\n  return m;\n}\n",
+                kind, double(roughness), double(sampling));
+  return buf;
+}
+
+std::string incident(double cos_theta) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "const vec3 WO = vec3(%.9f, 0.0, %.9f);\n", std::sqrt(1 - cos_theta * cos_theta), cos_theta);
+  return buf;
+}
+
+const char* kBsdfSample =
+    "  BsdfSample s;\n  ok = material_sample(make_material(), WO, true, vec3(rand01(), rand01(), rand01()), s) && s.pdf > 0.0;\n"
+    "  wi = s.wi;";
+const char* kBsdfDensity = "eval_pdf(d)";
+const char* kBsdfPdfHelper = "float eval_pdf(vec3 d) { float pdf; material_eval(make_material(), WO, d, true, pdf); return pdf; }\n";
+
+const double kAlpha = sidak_alpha(0.01, kChi2Tests);
+
+}  // namespace
+
+TEST_CASE("chi-square: diffuse, cosine-weighted and uniform", "[gpu][sampling]") {
+  for (int dot : {1, 0})
+    for (double c : {1.0, 0.5, 1e-3}) {
+      DirectionCase dc{material("MAT_DIFFUSE", 0, 0) + incident(c) + kBsdfPdfHelper, kBsdfSample, kBsdfDensity, dot};
+      const std::string name = std::string("diffuse ") + (dot ? "cosine" : "uniform") + " cos_o=" + std::to_string(c);
+      CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+    }
+}
+
+TEST_CASE("chi-square: GGX metal, visible-normal and cosine sampling", "[gpu][sampling]") {
+  struct C {
+    float glossiness, sampling;
+    double cos_o;
+  };
+  for (const C& c : {C{0.5f, 1, 1.0}, C{0.5f, 1, 0.5}, C{0.5f, 1, 1e-3}, C{0.8f, 1, 0.7}, C{0.8f, 1, 1e-3}, C{0.3f, 1, 0.3},
+                     C{0.5f, 0, 0.5}, C{0.8f, 0, 1e-3}}) {
+    DirectionCase dc{material("MAT_METAL", c.glossiness, c.sampling) + incident(c.cos_o) + kBsdfPdfHelper, kBsdfSample,
+                     kBsdfDensity};
+    const std::string name = "metal g=" + std::to_string(c.glossiness).substr(0, 3) + (c.sampling > 0 ? " vndf" : " cosine") +
+                             " cos_o=" + std::to_string(c.cos_o);
+    CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+  }
+}
+
+TEST_CASE("chi-square: light sampling of spheres, boxes and triangles", "[gpu][sampling]") {
+  // The density of a direction is only defined where the ray meets the light: the
+  // density kernel intersects the shape to find the distance and normal there.
+  const std::string density_helper =
+      "float light_density(vec3 d) {\n  Hit h = Hit(T_INF, -1, vec3(0.0));\n  ShapeRec s = make_light();\n"
+      "  Ray r = Ray(P, d);\n  if (s.kind == SHAPE_SPHERE) intersect_sphere(s, 0, r, h);\n"
+      "  if (s.kind == SHAPE_BOX) intersect_box(s, 0, r, h);\n  if (s.kind == SHAPE_TRIANGLE) intersect_triangle(s, 0, r, h);\n"
+      "  if (h.id < 0 || dot(h.n, d) >= 0.0) return 0.0;\n  return light_pdf_shape(s, P, d, h.t, h.n);\n}\n";
+  const char* sample = "  float pdf;\n  ok = light_sample_shape(make_light(), P, vec2(rand01(), rand01()), wi, pdf) && pdf > 0.0;";
+  struct C {
+    const char* name;
+    const char* shape;
+  };
+  for (const C& c : {C{"sphere light (near, wide cone)", "s.kind = SHAPE_SPHERE; s.a = vec3(0.3, -0.2, 1.5); s.radius = 1.2;"},
+                     C{"sphere light (far, narrow cone)", "s.kind = SHAPE_SPHERE; s.a = vec3(4.0, 0.3, 0.2); s.radius = 1.0;"},
+                     C{"box light (one face visible)", "s.kind = SHAPE_BOX; s.a = vec3(-1.0, -1.0, 0.5); s.b = vec3(1.0, 1.0, 2.0);"},
+                     C{"box light (two faces visible)", "s.kind = SHAPE_BOX; s.a = vec3(-2.5, -1.0, 0.4); s.b = vec3(-0.4, 1.0, 2.0);"},
+                     C{"box light (three faces visible)", "s.kind = SHAPE_BOX; s.a = vec3(0.3, 0.4, 0.5); s.b = vec3(2.0, 2.0, 2.0);"},
+                     C{"triangle light", "s.kind = SHAPE_TRIANGLE; s.a = vec3(-1.0, -1.0, 1.0); s.b = vec3(0.0, 1.5, 1.0); s.c = vec3(1.0, -1.0, 0.6);"}}) {
+    const std::string setup = std::string("const vec3 P = vec3(0.0);\nShapeRec make_light() {\n  ShapeRec s;\n  s.material = 0; s.light = 0;\n  ") +
+                              c.shape + "\n  return s;\n}\n" + density_helper;
+    DirectionCase dc{setup, sample, "light_density(d)"};
+    CHECK(direction_chi2(dc, c.name).p_value >= kAlpha);
+  }
+}
+
+TEST_CASE("sampled weights equal f cos / pdf of the evaluated BSDF", "[gpu][sampling]") {
+  for (const char* kind : {"MAT_DIFFUSE", "MAT_METAL"})
+    for (float sampling : {0.0f, 1.0f}) {
+      GlslKernel k(material(kind, 0.6f, sampling) + incident(0.4) +
+                   "vec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 99u), 0u);\n  BsdfSample s;\n"
+                   "  if (!material_sample(make_material(), WO, true, vec3(rand01(), rand01(), rand01()), s)) return vec4(0.0);\n"
+                   "  float pdf;\n  vec3 f = material_eval(make_material(), WO, s.wi, true, pdf);\n"
+                   "  return vec4(abs(s.weight - f / pdf) / max(f / pdf, vec3(1e-6)), abs(pdf - s.pdf) / pdf);\n}\n");
+      k.program().use();
+      k.program().set("u_dot_weight", 1);
+      float worst = 0;
+      for (const glm::vec4& v : k.run(20000)) worst = std::max({worst, v.x, v.y, v.z, v.w});
+      INFO(kind << " sampling " << sampling);
+      CHECK(worst < 1e-4f);
+    }
+}
