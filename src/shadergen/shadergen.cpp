@@ -2,7 +2,6 @@
 
 #include <cctype>
 #include <cstring>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -102,22 +101,32 @@ ShaderSource resolve_includes(const std::string& root_text, const std::string& r
 }
 
 std::string ShaderSource::map_log(const std::string& log) const {
-  // Drivers print "0:12:", "ERROR: 0:12:" or "0(12) :"; source 0 is the first file.
-  static const std::regex loc(R"((\d+)[:(](\d+)\)?\s?:)");
+  // Drivers print "0:12:" (Mesa, ANGLE) or "0(12) :" (NVIDIA): source 0 is files[0].
+  auto digits = [&](size_t i) {
+    size_t j = i;
+    while (j < log.size() && std::isdigit(static_cast<unsigned char>(log[j]))) ++j;
+    return j;
+  };
   std::string out;
-  std::sregex_iterator it(log.begin(), log.end(), loc), end;
-  size_t last = 0;
-  for (; it != end; ++it) {
-    const auto& m = *it;
-    const size_t src = std::stoul(m[1].str());
-    out += log.substr(last, size_t(m.position()) - last);
-    if (src < files.size())
-      out += files[src] + ":" + m[2].str() + ":";
-    else
-      out += m.str();
-    last = size_t(m.position() + m.length());
+  for (size_t i = 0; i < log.size();) {
+    const bool starts = std::isdigit(static_cast<unsigned char>(log[i])) &&
+                        (i == 0 || !std::isalnum(static_cast<unsigned char>(log[i - 1])));
+    const size_t a_end = starts ? digits(i) : i;
+    if (a_end > i && a_end - i <= 6 && a_end + 1 < log.size() && (log[a_end] == ':' || log[a_end] == '(')) {
+      const size_t b_end = digits(a_end + 1);
+      size_t after = b_end;
+      if (log[a_end] == '(' && after < log.size() && log[after] == ')') ++after;
+      while (log[a_end] == '(' && after < log.size() && log[after] == ' ') ++after;
+      const size_t src = std::stoul(log.substr(i, a_end - i));
+      if (b_end > a_end + 1 && after < log.size() && log[after] == ':' && src < files.size()) {
+        out += files[src] + ":" + log.substr(a_end + 1, b_end - a_end - 1) + ":";
+        i = after + 1;
+        continue;
+      }
+    }
+    out += log[i++];
   }
-  return out + log.substr(last);
+  return out;
 }
 
 std::string generate_prelude(const Features& f) {
