@@ -6,8 +6,10 @@ const float T_INF = 3.0e38;
 
 struct Ray { vec3 o; vec3 d; };
 // t: distance along the (unit) ray direction; id: shape index or -1; n: outward unit
-// geometric normal of the shape at the hit.
-struct Hit { float t; int id; vec3 n; };
+// geometric normal of the shape at the hit; p: the hit point, put back onto the surface
+// by the shape (pbrt-v4's re-projection), so that error does not compound bounce after
+// bounce (a ray reflected inside a glass sphere otherwise drifts off its surface).
+struct Hit { float t; int id; vec3 n; vec3 p; };
 
 float max3(vec3 v) { return max(max(v.x, v.y), v.z); }
 float max_abs(vec3 v) { return max3(abs(v)); }

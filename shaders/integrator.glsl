@@ -31,7 +31,7 @@ vec3 trace_path(Ray r) {
     }
     ShapeRec s = load_shape(h.id);
     MaterialRec m = load_material(s.material);
-    vec3 p = r.o + h.t * r.d;
+    vec3 p = h.p;
     bool entering = dot(r.d, h.n) < 0.0;
     // Emission from the front side; weighted against light sampling when this shape is a
     // light and the direction was not a delta-lobe choice.
@@ -65,7 +65,7 @@ vec3 trace_path(Ray r) {
     prev_pdf = bs.pdf;
     prev_delta = bs.delta;
     prev_p = p;
-    vec3 wi = from_local(fr, bs.wi);
+    vec3 wi = normalize(from_local(fr, bs.wi));
     r = Ray(offset_origin(p, n, wi), wi);
     if (bounce >= 3) {
       float q = min(max3(beta), 0.95);

@@ -24,6 +24,7 @@ constexpr double kFastFrameMs = 20.0;
 constexpr double kSlowFrameMs = 28.0;
 constexpr double kCpuBudgetMs = 12.0;
 constexpr int kMaxPassesPerFrame = 64;
+constexpr double kRateWindowMs = 3000.0;
 
 constexpr float kLookDegPerPixel = 0.2f;
 constexpr float kTurnDegPerSecond = 90.0f;
@@ -138,11 +139,18 @@ void App::handle_input(double dt_s) {
     if (down(GLFW_KEY_A)) d -= right;
     if (down(GLFW_KEY_Q)) d += forward;
     if (down(GLFW_KEY_E)) d -= forward;
-    if (d != glm::vec3(0.0f)) c.position += d * move, changed = true;
+    if (d != glm::vec3(0.0f)) {
+      c.position += d * move;
+      changed = true;
+    }
     const float turn = kTurnDegPerSecond * float(dt_s);
     const float yaw = float(down(GLFW_KEY_RIGHT) - down(GLFW_KEY_LEFT));
     const float pitch = float(down(GLFW_KEY_UP) - down(GLFW_KEY_DOWN));
-    if (yaw != 0.0f || pitch != 0.0f) c.yaw += yaw * turn, c.pitch += pitch * turn, changed = true;
+    if (yaw != 0.0f || pitch != 0.0f) {
+      c.yaw += yaw * turn;
+      c.pitch += pitch * turn;
+      changed = true;
+    }
   }
 
   // A drag looks around only if it started on the image, not on a panel.
@@ -172,6 +180,9 @@ void App::draw_panel() {
   };
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::Begin("Path tracer", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  // Long texts (errors, the GPU's name) wrap instead of widening the auto-sized panel.
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
+  ImGui::PushItemWidth(ImGui::GetFontSize() * 14.0f);
 
   if (ImGui::BeginCombo("scene", label(scene_.path).c_str())) {
     for (const std::string& f : scene_files_) {
@@ -183,9 +194,7 @@ void App::draw_panel() {
   }
   if (error_) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
     ImGui::TextUnformatted(error_->c_str());
-    ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
   }
 
@@ -204,18 +213,22 @@ void App::draw_panel() {
   ImGui::Text("samples/s  %.1f", samples_per_second_);
   ImGui::Text("elapsed    %.1f s", std::max(0.0, end_ms - restart_ms_) * 1e-3);
   ImGui::Text("resolution %d x %d", renderer_->width(), renderer_->height());
-  ImGui::TextDisabled("%s", options_.gl_renderer.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextUnformatted(options_.gl_renderer.c_str());
+  ImGui::PopStyleColor();
+  ImGui::PopItemWidth();
+  ImGui::PopTextWrapPos();
   ImGui::End();
 }
 
 void App::render_passes(double now_ms) {
-  if (renderer_->samples() == 0) restart_ms_ = now_ms, done_ms_ = -1.0;
+  if (renderer_->samples() == 0) restart_ms_ = now_ms;
   const auto t0 = std::chrono::steady_clock::now();
   int done = 0;
   while (done < passes_per_frame_ && !renderer_->converged()) {
     const int added = renderer_->step();
     if (added == 0) break;
-    rate_samples_ += added;
+    total_samples_ += added;
     ++done;
     if (ms_since(t0) > kCpuBudgetMs) break;
   }
@@ -224,15 +237,19 @@ void App::render_passes(double now_ms) {
   if (frame_ms_avg_ > kSlowFrameMs) passes_per_frame_ = std::max(1, passes_per_frame_ * 3 / 4);
   else if (frame_ms_avg_ < kFastFrameMs && done == passes_per_frame_) passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
 
-  if (renderer_->converged() && done_ms_ < 0) done_ms_ = now_ms;
-  if (done == 0 || rate_t0_ms_ < 0) {
-    rate_t0_ms_ = now_ms;  // idle frames are not part of the rate
-    rate_samples_ = 0;
-  } else if (now_ms - rate_t0_ms_ >= 1000.0) {
-    samples_per_second_ = double(rate_samples_) * 1000.0 / (now_ms - rate_t0_ms_);
-    rate_t0_ms_ = now_ms;
-    rate_samples_ = 0;
+  if (!renderer_->converged()) done_ms_ = -1.0;  // a raised limit resumes the clock
+  else if (done_ms_ < 0) done_ms_ = now_ms;
+  if (done == 0) {
+    rate_history_.clear();  // idle frames are not part of the rate; the last rate stays shown
+    return;
   }
+  rate_history_.push_back({now_ms, total_samples_});
+  while (rate_history_.size() > 2 && now_ms - rate_history_[1].ms >= kRateWindowMs)
+    rate_history_.erase(rate_history_.begin());
+  // The samples issued by the frames after the oldest one, over the time since it.
+  const RatePoint& first = rate_history_.front();
+  const bool finished = renderer_->converged() && now_ms > first.ms;  // a short render gets a rate too
+  if (now_ms - first.ms >= 1000.0 || finished) samples_per_second_ = double(total_samples_ - first.samples) * 1000.0 / (now_ms - first.ms);
 }
 
 void App::present(int fb_w, int fb_h) {

@@ -58,9 +58,15 @@ class App {
   double frame_ms_avg_ = 16.7;
   int passes_per_frame_ = 1;
 
-  // Progress: samples per second over a sliding window; elapsed time since the restart.
-  double rate_t0_ms_ = -1.0;
-  long rate_samples_ = 0;
+  // Progress: samples per second over the last few seconds of rendering (frames can be
+  // slow: with a software GPU one pass may take most of a second); elapsed time since the
+  // restart.
+  struct RatePoint {
+    double ms;
+    long samples;  // samples issued up to and including this frame
+  };
+  std::vector<RatePoint> rate_history_;
+  long total_samples_ = 0;
   double samples_per_second_ = 0.0;
   double restart_ms_ = 0.0, done_ms_ = -1.0;
 

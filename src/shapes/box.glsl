@@ -21,6 +21,9 @@ void intersect_box(ShapeRec s, int id, Ray r, inout Hit h) {
   h.t = t;
   h.id = id;
   h.n = axis * (inside ? sign(dot(axis, d)) : -sign(dot(axis, d)));
+  // Snap the coordinate across the face onto the face's plane.
+  h.p = r.o + t * r.d;
+  h.p = mix(h.p, dot(h.n, axis) > 0.0 ? s.b : s.a, axis);
 }
 
 #ifdef HAS_LIGHT_BOX

@@ -8,4 +8,6 @@ void intersect_plane(ShapeRec s, int id, Ray r, inout Hit h) {
   h.t = t;
   h.id = id;
   h.n = s.a;
+  h.p = r.o + t * r.d;
+  h.p -= s.a * (dot(s.a, h.p) - s.radius);
 }

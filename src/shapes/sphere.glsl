@@ -18,7 +18,8 @@ void intersect_sphere(ShapeRec s, int id, Ray r, inout Hit h) {
   if (t <= 0.0 || t >= h.t) return;
   h.t = t;
   h.id = id;
-  h.n = (r.o + t * r.d - s.a) / s.radius;
+  h.n = normalize(r.o + t * r.d - s.a);
+  h.p = s.a + s.radius * h.n;
 }
 
 #ifdef HAS_LIGHT_SPHERE

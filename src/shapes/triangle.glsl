@@ -18,6 +18,7 @@ void intersect_triangle(ShapeRec s, int id, Ray r, inout Hit h) {
   h.t = t;
   h.id = id;
   h.n = normalize(cross(e1, e2));
+  h.p = s.a + u * e1 + v * e2;  // barycentric: on the triangle's plane by construction
 }
 
 #ifdef HAS_LIGHT_TRIANGLE

@@ -1,0 +1,92 @@
+// Small scenes built in code for the transport tests.
+#pragma once
+#include <vector>
+
+#include "render/renderer.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+inline int add_material(Scene& s, Material m) {
+  s.materials.push_back(m);
+  return int(s.materials.size()) - 1;
+}
+
+inline void add_box(Scene& s, glm::vec3 lo, glm::vec3 hi, int material) {
+  Shape b;
+  b.kind = ShapeKind::Box;
+  b.a = lo;
+  b.b = hi;
+  b.material = material;
+  s.shapes.push_back(b);
+}
+
+inline void add_sphere(Scene& s, glm::vec3 c, float r, int material) {
+  Shape b;
+  b.kind = ShapeKind::Sphere;
+  b.a = c;
+  b.radius = r;
+  b.material = material;
+  s.shapes.push_back(b);
+}
+
+// Camera at `pos` looking down -z (yaw 90 in the seed's convention).
+inline Camera camera_looking_down_z(glm::vec3 pos) {
+  Camera c;
+  c.position = pos;
+  c.yaw = 90.0f;
+  return c;
+}
+
+// A closed room [-1,1]^3 made of six wall boxes whose inner faces all carry `wall`.
+inline Scene closed_room(const Material& wall) {
+  Scene s;
+  s.camera = camera_looking_down_z(glm::vec3(0.0f, 0.0f, 0.5f));
+  s.environment.color = glm::vec3(0.0f);
+  const int m = add_material(s, wall);
+  const float t = 1.1f;
+  add_box(s, {-t, -t, -t}, {t, -1, t}, m);
+  add_box(s, {-t, 1, -t}, {t, t, t}, m);
+  add_box(s, {-t, -t, -t}, {-1, t, t}, m);
+  add_box(s, {1, -t, -t}, {t, t, t}, m);
+  add_box(s, {-t, -t, -t}, {t, t, -1}, m);
+  add_box(s, {-t, -t, 1}, {t, t, t}, m);
+  return s;
+}
+
+struct RenderResult {
+  std::vector<float> rgba;  // mean radiance rgb, mean squared luminance a
+  int spp;
+  int w, h;
+};
+
+inline RenderResult render_scene(const Scene& scene, int w, int h, int spp, RenderSettings st = {}) {
+  Renderer r;
+  r.resize(w, h);
+  st.sample_limit = spp;
+  if (st.spp_per_pass <= 1) st.spp_per_pass = 16;
+  r.set_settings(st);
+  r.set_scene(scene);
+  while (!r.converged()) r.step();
+  return {r.read_radiance(), spp, w, h};
+}
+
+// Mean luminance over pixels [x0,x1)x[y0,y1) and its standard error from the per-pixel
+// second moments the accumulator keeps.
+struct Estimate {
+  double mean, se;
+};
+inline Estimate region_mean(const RenderResult& r, int x0, int y0, int x1, int y1) {
+  double sum = 0, var = 0;
+  int n = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x, ++n) {
+      const float* p = &r.rgba[(size_t(y) * r.w + x) * 4];
+      const double l = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+      sum += l;
+      var += std::max(0.0, double(p[3]) - l * l) / r.spp;
+    }
+  return {sum / n, std::sqrt(var) / n};
+}
+
+}  // namespace pt

@@ -1,0 +1,193 @@
+// Light transport against closed forms, on the production integrator: white furnaces,
+// a closed room of emitting diffuse walls, a sphere light over a plane, Fresnel values.
+// Each check is |estimate - exact| < kZ standard errors of the estimate (the error is
+// printed), so a biased estimator fails and a correct one passes at any sample count.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <algorithm>
+#include <cstdio>
+
+#include "gl_context.h"
+#include "glsl_harness.h"
+#include "render/camera.h"
+#include "scene_builders.h"
+
+using namespace pt;
+
+namespace {
+
+constexpr double kZ = 4.0;
+
+void check_close(const char* what, Estimate e, double exact) {
+  std::printf("%-58s %.5f  exact %.5f  (%+.2f se, se %.5f)\n", what, e.mean, exact, (e.mean - exact) / e.se, e.se);
+  INFO(what << ": " << e.mean << " vs " << exact << " (se " << e.se << ")");
+  CHECK(std::abs(e.mean - exact) < kZ * e.se + 1e-6 * exact);
+}
+
+Scene furnace(const Material& m) {
+  Scene s;
+  s.camera = camera_looking_down_z(glm::vec3(0.0f, 0.0f, 4.0f));
+  s.environment.color = glm::vec3(1.0f);
+  add_sphere(s, glm::vec3(0.0f), 1.0f, add_material(s, m));
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("white furnace: energy-conserving materials return the environment", "[gpu][transport]") {
+  test_gl();
+  RenderSettings st;
+  st.max_bounces = 64;
+  struct C {
+    const char* name;
+    Material m;
+    double expect;
+  };
+  Material diffuse, half, glass, transmit, glass_tir;
+  half.tint = glm::vec3(0.5f);
+  glass.kind = MaterialKind::SmoothDielectric;
+  glass.inner_ior = 1.5f;
+  glass_tir = glass;
+  glass_tir.inner_ior = 2.4f;  // diamond: much total internal reflection inside
+  transmit.kind = MaterialKind::Transmit;
+  transmit.outer_ior = 1.0f;
+  transmit.inner_ior = 1.33f;
+  for (const C& c : {C{"furnace: diffuse albedo 1 -> 1", diffuse, 1.0}, C{"furnace: diffuse albedo 0.5 -> 0.5", half, 0.5},
+                     C{"furnace: smooth dielectric n=1.5 -> 1", glass, 1.0},
+                     C{"furnace: smooth dielectric n=2.4 -> 1", glass_tir, 1.0},
+                     C{"furnace: transmit n=1.33 -> 1", transmit, 1.0}}) {
+    // The sphere (radius 1 at distance 4) covers the central 16x16 pixels of 64x64.
+    const RenderResult r = render_scene(furnace(c.m), 64, 64, 64, st);
+    check_close(c.name, region_mean(r, 24, 24, 40, 40), c.expect);
+  }
+}
+
+TEST_CASE("closed room of emitting diffuse walls: Le * sum of rho^k up to the bounce limit", "[gpu][transport]") {
+  test_gl();
+  struct C {
+    float le, rho;
+    int bounces;
+    bool nee;
+  };
+  for (const C& c : {C{1.0f, 0.5f, 1, true}, C{1.0f, 0.5f, 3, true}, C{0.5f, 0.8f, 64, true}, C{0.5f, 0.8f, 64, false},
+                     C{2.0f, 0.3f, 16, true}}) {
+    Material wall;
+    wall.tint = glm::vec3(c.rho);
+    wall.emission = glm::vec3(c.le);
+    RenderSettings st;
+    st.max_bounces = c.bounces;
+    st.nee = c.nee;
+    const RenderResult r = render_scene(closed_room(wall), 32, 32, 64, st);
+    double exact = 0;
+    for (int k = 0; k <= c.bounces; ++k) exact += c.le * std::pow(double(c.rho), k);
+    char name[128];
+    std::snprintf(name, sizeof name, "closed room Le=%.1f rho=%.1f bounces=%d %s", double(c.le), double(c.rho), c.bounces,
+                  c.nee ? "NEE+MIS" : "BSDF only");
+    check_close(name, region_mean(r, 0, 0, 32, 32), exact);
+  }
+}
+
+TEST_CASE("sphere light over a white plane: radiance = L (r/D)^2 cos(theta)", "[gpu][transport]") {
+  test_gl();
+  // A sphere of radiance L fully above a Lambertian plane of albedo 1 gives irradiance
+  // E = pi L (r/D)^2 cos(theta) (like a point source), so the plane's radiance is
+  // L (r/D)^2 cos(theta). One bounce, black environment.
+  const float L = 10.0f, radius = 0.5f;
+  const glm::vec3 center(0.3f, 2.0f, -0.2f);
+  Scene s;
+  s.camera.position = glm::vec3(0.0f, 6.0f, 3.0f);
+  s.camera.yaw = 90.0f;
+  s.camera.pitch = -60.0f;
+  s.environment.color = glm::vec3(0.0f);
+  Material white, emit;
+  emit.kind = MaterialKind::Emit;
+  emit.emission = glm::vec3(L);
+  Shape plane;
+  plane.kind = ShapeKind::Plane;
+  plane.a = glm::vec3(0, 1, 0);
+  plane.radius = 0.0f;
+  plane.material = add_material(s, white);
+  s.shapes.push_back(plane);
+  add_sphere(s, center, radius, add_material(s, emit));
+  for (bool nee : {true, false}) {
+  RenderSettings st;
+  st.max_bounces = 1;
+  st.nee = nee;
+  const int W = 48, H = 48;
+  const RenderResult r = render_scene(s, W, H, nee ? 256 : 4096, st);
+  // The exact pixel value: the analytic radiance averaged over the pixel (box filter).
+  const CameraBasis cb = camera_basis(s.camera, 1.0f);
+  auto exact_pixel = [&](int px, int py, bool* valid) {
+    double sum = 0;
+    *valid = true;
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        const glm::vec2 ndc = (glm::vec2(float(px) + (a + 0.5f) / 4, float(py) + (b + 0.5f) / 4) / float(W)) * 2.0f - 1.0f;
+        const glm::vec3 d = glm::normalize(cb.forward + ndc.x * cb.right + ndc.y * cb.up);
+        const float t = -cb.position.y / d.y;
+        const glm::vec3 x = cb.position + t * d;
+        const glm::vec3 to = center - x;
+        const double dist = glm::length(to);
+        // Skip pixels where the light sphere itself is in view.
+        const glm::vec3 oc = cb.position - center;
+        const float bq = glm::dot(oc, d), cq = glm::dot(oc, oc) - radius * radius;
+        if (d.y >= 0 || bq * bq - cq >= 0) *valid = false;
+        sum += L * (radius / dist) * (radius / dist) * (to.y / dist);
+      }
+    return sum / 16;
+  };
+  // Pixels that see any of the light sphere are left out, with a one-pixel margin: a
+  // sliver of an emitter 50x brighter than the plane would dominate a pixel.
+  std::vector<double> exact_at(size_t(W * H));
+  std::vector<char> sees_light(size_t(W * H));
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      bool valid;
+      exact_at[size_t(y * W + x)] = exact_pixel(x, y, &valid);
+      sees_light[size_t(y * W + x)] = !valid;
+    }
+  double sum = 0, var = 0, exact = 0;
+  int n = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      bool near_light = false;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int xx = std::clamp(x + dx, 0, W - 1), yy = std::clamp(y + dy, 0, H - 1);
+          near_light |= sees_light[size_t(yy * W + xx)] != 0;
+        }
+      if (near_light) continue;
+      const float* p = &r.rgba[(size_t(y) * W + x) * 4];
+      sum += p[1];  // grey: any channel
+      var += std::max(0.0, double(p[3]) - double(p[1]) * p[1]) / r.spp;
+      exact += exact_at[size_t(y * W + x)];
+      ++n;
+    }
+  REQUIRE(n > W * H / 2);
+  check_close(nee ? "sphere light over plane, NEE+MIS (mean of the plane's pixels)" : "sphere light over plane, BSDF only",
+              Estimate{sum / n, std::sqrt(var) / n}, exact / n);
+  }
+}
+
+TEST_CASE("Fresnel closed forms", "[gpu][transport]") {
+  GlslKernel k(
+      "vec4 kernel(vec4 x, int i) {\n"
+      "  return vec4(fresnel_dielectric(x.x, x.y), fresnel_conductor(x.x, x.y, x.z), 0.0, 0.0);\n}\n");
+  const std::vector<glm::vec4> out = k.run({{1.0f, 1.5f, 0.0f, 0.0f},
+                                            {1.0f, 1.0f / 1.5f, 0.0f, 0.0f},
+                                            {0.5f, 1.0f / 1.5f, 0.0f, 0.0f},  // beyond the critical angle (cos 0.745)
+                                            {0.01f, 1.0f / 1.33f, 0.0f, 0.0f},
+                                            {1.0f, 0.2f, 3.0f, 0.0f},
+                                            {0.6f, 1.5f, 0.0f, 0.0f}});
+  CHECK(out[0].x == Approx(0.04).epsilon(1e-5));                 // (n-1)^2/(n+1)^2 for n = 1.5
+  CHECK(out[1].x == Approx(0.04).epsilon(1e-5));                 // the same from inside
+  CHECK(out[2].x == 1.0f);                                       // total internal reflection
+  CHECK(out[3].x == 1.0f);
+  CHECK(out[4].y == Approx((0.64 + 9.0) / (1.44 + 9.0)).epsilon(1e-5));  // ((n-1)^2+k^2)/((n+1)^2+k^2)
+  CHECK(out[5].y == Approx(out[5].x).epsilon(1e-5));             // k = 0: the dielectric formula
+  // Oblique dielectric value against the Fresnel equations evaluated on the CPU.
+  const double ci = 0.6, eta = 1.5, st2 = (1 - ci * ci) / (eta * eta), ct = std::sqrt(1 - st2);
+  const double rs = (ci - eta * ct) / (ci + eta * ct), rp = (eta * ci - ct) / (eta * ci + ct);
+  CHECK(out[5].x == Approx(0.5 * (rs * rs + rp * rp)).epsilon(1e-5));
+}
