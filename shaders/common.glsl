@@ -11,6 +11,8 @@ struct Ray { vec3 o; vec3 d; };
 // bounce (a ray reflected inside a glass sphere otherwise drifts off its surface).
 struct Hit { float t; int id; vec3 n; vec3 p; };
 
+int g_rays;  // rays cast by this fragment (counted in scene_intersect)
+
 float max3(vec3 v) { return max(max(v.x, v.y), v.z); }
 float max_abs(vec3 v) { return max3(abs(v)); }
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }

@@ -3,6 +3,7 @@
 // the previous pass (ping-pong). Unbiased: next-event estimation to emissive shapes,
 // combined with BSDF sampling by the power heuristic; Russian roulette after 3 bounces.
 uniform highp sampler2D u_accum;
+uniform highp sampler2D u_stats_in;
 uniform float u_blend;       // weight of this pass: spp / (samples so far + spp)
 uniform int u_spp;           // samples per pixel in this pass
 uniform int u_sample_base;   // index of this pass's first sample
@@ -15,7 +16,16 @@ uniform vec3 u_cam_fwd;
 uniform vec2 u_size;
 uniform vec3 u_env_color;
 
-out vec4 o_accum;
+layout(location = 0) out vec4 o_accum;
+// Running sums per pixel: x = non-finite samples (dropped), y = rays cast.
+layout(location = 1) out vec4 o_stats;
+
+// A sample is bad when any channel's exponent bits are all ones (NaN or Inf): a bit
+// test, because a driver may assume finite math and fold isnan/isinf away.
+bool non_finite(vec3 c) {
+  uvec3 e = floatBitsToUint(c) & 0x7f800000u;
+  return any(equal(e, uvec3(0x7f800000u)));
+}
 
 vec3 trace_path(Ray r) {
   vec3 L = vec3(0.0);
@@ -80,11 +90,17 @@ void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec3 sum = vec3(0.0);
   float sum_l2 = 0.0;
+  float bad = 0.0;
+  g_rays = 0;
   for (int s = 0; s < u_spp; ++s) {
     rng_init(uvec2(px), uint(u_sample_base + s));
     vec2 ndc = (vec2(px) + vec2(rand01(), rand01())) / u_size * 2.0 - 1.0;
     vec3 d = normalize(u_cam_fwd + ndc.x * u_cam_right + ndc.y * u_cam_up);
     vec3 c = trace_path(Ray(u_cam_pos, d));
+    if (non_finite(c)) {
+      bad += 1.0;
+      c = vec3(0.0);
+    }
     sum += c;
     float l = luminance(c);
     sum_l2 += l * l;
@@ -92,4 +108,6 @@ void main() {
   // rgb: mean radiance; a: mean squared luminance (for the per-pixel variance).
   vec4 cur = vec4(sum, sum_l2) / float(u_spp);
   o_accum = u_blend >= 1.0 ? cur : mix(texelFetch(u_accum, px, 0), cur, u_blend);
+  vec4 prev_stats = u_blend >= 1.0 ? vec4(0.0) : texelFetch(u_stats_in, px, 0);
+  o_stats = prev_stats + vec4(bad, float(g_rays), 0.0, 0.0);
 }

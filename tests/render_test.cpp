@@ -35,7 +35,7 @@ struct TileStats {
   double se[kTiles * kTiles];
 };
 
-std::vector<float> render(const Scene& scene, int spp, RenderSettings s = {}) {
+std::vector<float> render(const Scene& scene, int spp, RenderSettings s = {}, double* bad_samples = nullptr) {
   test_gl();
   Renderer r;
   r.resize(kSize, kSize);
@@ -44,6 +44,7 @@ std::vector<float> render(const Scene& scene, int spp, RenderSettings s = {}) {
   r.set_settings(s);
   r.set_scene(scene);
   while (!r.converged()) r.step();
+  if (bad_samples) *bad_samples = r.counters().bad_samples;
   return r.read_radiance();
 }
 
@@ -103,8 +104,10 @@ TEST_CASE("reference scenes: no NaN/Inf and tile statistics match the reference"
   for (const char* name : {"scene0", "scene1", "scene2"}) {
     DYNAMIC_SECTION(name) {
       const Scene scene = load_scene_file(repo_path(std::string("scenes/reference/") + name + ".xml"));
-      const std::vector<float> img = render(scene, kTestSpp);
+      double bad_samples = -1;
+      const std::vector<float> img = render(scene, kTestSpp, {}, &bad_samples);
       const ImageStats st = image_stats(img);
+      CHECK(bad_samples == 0);  // counted per sample in the shader
       REQUIRE(st.bad == 0);
       const TileStats t = tile_stats(img, kTestSpp);
       std::ifstream in(ref_path(name));

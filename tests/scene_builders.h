@@ -58,6 +58,7 @@ struct RenderResult {
   std::vector<float> rgba;  // mean radiance rgb, mean squared luminance a
   int spp;
   int w, h;
+  Renderer::Counters counters;
 };
 
 inline RenderResult render_scene(const Scene& scene, int w, int h, int spp, RenderSettings st = {}) {
@@ -68,7 +69,7 @@ inline RenderResult render_scene(const Scene& scene, int w, int h, int spp, Rend
   r.set_settings(st);
   r.set_scene(scene);
   while (!r.converged()) r.step();
-  return {r.read_radiance(), spp, w, h};
+  return {r.read_radiance(), spp, w, h, r.counters()};
 }
 
 // Mean luminance over pixels [x0,x1)x[y0,y1) and its standard error from the per-pixel

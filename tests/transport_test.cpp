@@ -19,7 +19,12 @@ namespace {
 
 constexpr double kZ = 4.0;
 
-void check_close(const char* what, Estimate e, double exact) {
+void check_close(const char* what, Estimate e, double exact, const RenderResult* r = nullptr) {
+  if (r) {
+    INFO(what << ": NaN/Inf samples");
+    CHECK(r->counters.bad_samples == 0);
+    CHECK(r->counters.rays >= double(r->w) * r->h * r->spp);
+  }
   std::printf("%-58s %.5f  exact %.5f  (%+.2f se, se %.5f)\n", what, e.mean, exact, (e.mean - exact) / e.se, e.se);
   INFO(what << ": " << e.mean << " vs " << exact << " (se " << e.se << ")");
   CHECK(std::abs(e.mean - exact) < kZ * e.se + 1e-6 * exact);
@@ -59,7 +64,7 @@ TEST_CASE("white furnace: energy-conserving materials return the environment", "
                      C{"furnace: transmit n=1.33 -> 1", transmit, 1.0}}) {
     // The sphere (radius 1 at distance 4) covers the central 16x16 pixels of 64x64.
     const RenderResult r = render_scene(furnace(c.m), 64, 64, 64, st);
-    check_close(c.name, region_mean(r, 24, 24, 40, 40), c.expect);
+    check_close(c.name, region_mean(r, 24, 24, 40, 40), c.expect, &r);
   }
 }
 
@@ -84,7 +89,7 @@ TEST_CASE("closed room of emitting diffuse walls: Le * sum of rho^k up to the bo
     char name[128];
     std::snprintf(name, sizeof name, "closed room Le=%.1f rho=%.1f bounces=%d %s", double(c.le), double(c.rho), c.bounces,
                   c.nee ? "NEE+MIS" : "BSDF only");
-    check_close(name, region_mean(r, 0, 0, 32, 32), exact);
+    check_close(name, region_mean(r, 0, 0, 32, 32), exact, &r);
   }
 }
 
@@ -166,7 +171,7 @@ TEST_CASE("sphere light over a white plane: radiance = L (r/D)^2 cos(theta)", "[
     }
   REQUIRE(n > W * H / 2);
   check_close(nee ? "sphere light over plane, NEE+MIS (mean of the plane's pixels)" : "sphere light over plane, BSDF only",
-              Estimate{sum / n, std::sqrt(var) / n}, exact / n);
+              Estimate{sum / n, std::sqrt(var) / n}, exact / n, &r);
   }
 }
 

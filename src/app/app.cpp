@@ -284,6 +284,11 @@ const std::vector<float>& App::radiance_snapshot() {
   return snapshot_;
 }
 
+const std::vector<uint8_t>& App::display_snapshot() {
+  display_snapshot_ = renderer_->read_display();
+  return display_snapshot_;
+}
+
 std::string App::stats_json() const {
   // The mean is computed on demand: a read-back stalls the GPU pipeline.
   const std::vector<float> px = renderer_->read_radiance();

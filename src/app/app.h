@@ -2,6 +2,7 @@
 // and the camera controls. The platform creates the GL context and the ImGui backends,
 // and calls frame() once per displayed frame between ImGui::NewFrame() and ImGui::Render().
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,6 +38,7 @@ class App {
   void set_sample_limit(int n);
   bool load_scene(const std::string& path);              // false: error() says why
   const std::vector<float>& radiance_snapshot();         // RGBA float, rows bottom to top
+  const std::vector<uint8_t>& display_snapshot();        // tone-mapped RGBA8, rows bottom to top
   const Renderer& renderer() const { return *renderer_; }
 
  private:
@@ -78,6 +80,7 @@ class App {
   Framebuffer present_fbo_;
 
   std::vector<float> snapshot_;
+  std::vector<uint8_t> display_snapshot_;
 };
 
 }  // namespace pt

@@ -124,9 +124,12 @@ int render(int argc, char** argv) {
   const double secs = seconds_since(t0);
   const std::vector<float> radiance = r.read_radiance();
   const pt::ImageStats st = pt::image_stats(radiance);
-  std::printf("rendered %d spp at %dx%d, %d bounces, in %.3f s: %.2f spp/s, %.1f Mpaths/s\n", r.samples(), width, height,
-              settings.max_bounces, secs, r.samples() / secs, double(r.samples()) * width * height / secs * 1e-6);
-  std::printf("mean radiance: %.6f %.6f %.6f; non-finite pixels: %ld\n", st.mean.x, st.mean.y, st.mean.z, st.bad);
+  const pt::Renderer::Counters counters = r.counters();
+  std::printf("rendered %d spp at %dx%d, %d bounces, in %.3f s: %.2f spp/s, %.1f Mpaths/s, %.1f Mrays/s\n", r.samples(),
+              width, height, settings.max_bounces, secs, r.samples() / secs, double(r.samples()) * width * height / secs * 1e-6,
+              counters.rays / secs * 1e-6);
+  std::printf("mean radiance: %.6f %.6f %.6f; non-finite samples: %.0f, pixels: %ld\n", st.mean.x, st.mean.y, st.mean.z,
+              counters.bad_samples, st.bad);
   if (auto_exposure) {
     settings.exposure = float(pt::auto_exposure(radiance));
     r.set_settings(settings);
@@ -139,7 +142,7 @@ int render(int argc, char** argv) {
     return 1;
   }
   std::printf("wrote %s\n", out.c_str());
-  return st.bad == 0 ? 0 : 3;
+  return st.bad == 0 && counters.bad_samples == 0 ? 0 : 3;
 }
 
 }  // namespace

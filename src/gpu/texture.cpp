@@ -32,6 +32,12 @@ Framebuffer::Framebuffer(const Texture& color) {
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
 }
 
+Framebuffer::Framebuffer(const Texture& color0, const Texture& color1) : Framebuffer(color0) {
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, color1.id(), 0);
+  const GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, bufs);
+}
+
 bool Framebuffer::complete() const {
   glBindFramebuffer(GL_FRAMEBUFFER, id_);
   return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;

@@ -39,6 +39,8 @@ class Framebuffer {
  public:
   Framebuffer() = default;
   explicit Framebuffer(const Texture& color);
+  // Two colour attachments, both drawn to (multiple render targets).
+  Framebuffer(const Texture& color0, const Texture& color1);
   ~Framebuffer() { reset(); }
   Framebuffer(Framebuffer&& o) noexcept : id_(std::exchange(o.id_, 0u)) {}
   Framebuffer& operator=(Framebuffer&& o) noexcept {

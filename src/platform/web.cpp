@@ -132,6 +132,14 @@ EMSCRIPTEN_KEEPALIVE const float* pt_radiance(int* count) {
   return px.data();
 }
 
+// The tone-mapped image as displayed (before scaling to the canvas), RGBA8.
+EMSCRIPTEN_KEEPALIVE const uint8_t* pt_display(int* count) {
+  if (!g_app) return *count = 0, nullptr;
+  const std::vector<uint8_t>& px = g_app->display_snapshot();
+  *count = int(px.size());
+  return px.data();
+}
+
 }  // extern "C"
 
 int main(int argc, char** argv) {

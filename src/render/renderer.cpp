@@ -6,7 +6,7 @@
 namespace pt {
 namespace {
 
-enum Unit { kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3 };
+enum Unit { kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3, kStatsUnit = 4 };
 
 Texture upload(const RecordBuffer& b) {
   const std::vector<float> t = b.texels();
@@ -83,7 +83,8 @@ void Renderer::resize(int width, int height) {
   height_ = height;
   for (int i = 0; i < 2; ++i) {
     accum_[i] = Texture(width, height, accum_format_, nullptr);
-    fbo_[i] = Framebuffer(accum_[i]);
+    stats_[i] = Texture(width, height, accum_format_, nullptr);
+    fbo_[i] = Framebuffer(accum_[i], stats_[i]);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   restart();
@@ -97,6 +98,7 @@ int Renderer::step() {
   p.use();
   const CameraBasis cb = camera_basis(camera_, float(width_) / float(height_));
   p.set("u_accum", int(kAccumUnit));
+  p.set("u_stats_in", int(kStatsUnit));
   p.set("u_shape_data", int(kShapeUnit));
   p.set("u_material_data", int(kMaterialUnit));
   p.set("u_light_data", int(kLightUnit));
@@ -115,6 +117,7 @@ int Renderer::step() {
   p.set("u_size", glm::vec2(float(width_), float(height_)));
   p.set("u_env_color", env_color_);
   accum_[cur_].bind(kAccumUnit);
+  stats_[cur_].bind(kStatsUnit);
   shape_tex_.bind(kShapeUnit);
   material_tex_.bind(kMaterialUnit);
   light_tex_.bind(kLightUnit);
@@ -153,6 +156,22 @@ std::vector<float> Renderer::read_radiance() const {
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return out;
+}
+
+Renderer::Counters Renderer::counters() const {
+  std::vector<float> px(size_t(width_) * height_ * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur_].id());
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, px.data());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  Counters c;
+  if (samples_ == 0) return c;
+  for (size_t i = 0; i < px.size(); i += 4) {
+    c.bad_samples += px[i];
+    c.rays += px[i + 1];
+  }
+  return c;
 }
 
 std::vector<uint8_t> Renderer::read_display() const {

@@ -59,6 +59,12 @@ class Renderer {
   std::vector<float> read_radiance() const;
   // Tone-mapped 8-bit RGBA, rows bottom to top.
   std::vector<uint8_t> read_display() const;
+  // Totals since the last restart, counted in the shader.
+  struct Counters {
+    double bad_samples = 0;  // NaN/Inf samples (dropped from the estimate)
+    double rays = 0;         // every ray cast: camera, bounce and shadow
+  };
+  Counters counters() const;
 
  private:
   struct CachedProgram {
@@ -71,6 +77,7 @@ class Renderer {
   Program display_;
   Texture shape_tex_, material_tex_, light_tex_;
   Texture accum_[2];
+  Texture stats_[2];
   Framebuffer fbo_[2];
   GLenum accum_format_ = GL_RGBA32F;
   GLuint vao_ = 0;

@@ -149,7 +149,7 @@ std::string generate_prelude(const Features& f) {
 
   // Dispatch over the kinds present, in list order.
   g += "uniform int u_num_shapes;\n";
-  g += "Hit scene_intersect(Ray r) {\n  Hit h = Hit(T_INF, -1, vec3(0.0), vec3(0.0));\n";
+  g += "Hit scene_intersect(Ray r) {\n  ++g_rays;\n  Hit h = Hit(T_INF, -1, vec3(0.0), vec3(0.0));\n";
   g += "  for (int i = 0; i < u_num_shapes; ++i) {\n    ShapeRec s = load_shape(i);\n";
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i)))
