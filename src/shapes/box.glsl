@@ -1,14 +1,16 @@
 // Axis-aligned box: <Box min="x y z" max="x y z"> (the loader normalises min > max).
-// Slab method; zero direction components are nudged to a tiny positive value so that
-// 0 * inf never makes a NaN and a slab the ray runs parallel to constrains nothing
-// unless the origin lies outside it.
+// Slab method. An axis the ray runs parallel to (a zero direction component) constrains
+// nothing when the origin lies within the closed slab and rejects the ray otherwise; it
+// is handled explicitly, so 0 * inf never makes a NaN and a ray lying in a face plane
+// hits the box the same way whichever face (min or max) it lies in.
 void intersect_box(ShapeRec s, int id, Ray r, inout Hit h) {
-  vec3 d = mix(r.d, vec3(1e-30), lessThan(abs(r.d), vec3(1e-30)));
-  vec3 inv = 1.0 / d;
+  bvec3 parallel = lessThan(abs(r.d), vec3(1e-30));
+  if (any(parallel) && any(bvec3(uvec3(parallel) & (uvec3(lessThan(r.o, s.a)) | uvec3(greaterThan(r.o, s.b)))))) return;
+  vec3 inv = 1.0 / mix(r.d, vec3(1.0), parallel);
   vec3 ta = (s.a - r.o) * inv;
   vec3 tb = (s.b - r.o) * inv;
-  vec3 tmin = min(ta, tb);
-  vec3 tmax = max(ta, tb);
+  vec3 tmin = mix(min(ta, tb), vec3(-T_INF), parallel);
+  vec3 tmax = mix(max(ta, tb), vec3(T_INF), parallel);
   float t_near = max3(tmin);
   float t_far = min(min(tmax.x, tmax.y), tmax.z);
   if (t_near > t_far || t_far <= 0.0) return;
@@ -18,9 +20,10 @@ void intersect_box(ShapeRec s, int id, Ray r, inout Hit h) {
   vec3 sel = inside ? tmax : tmin;
   vec3 axis = sel.x == t ? vec3(1, 0, 0) : (sel.y == t ? vec3(0, 1, 0) : vec3(0, 0, 1));
   // Entering: the normal opposes the ray; leaving from inside: it points along it.
+  float along = dot(axis, r.d) >= 0.0 ? 1.0 : -1.0;
   h.t = t;
   h.id = id;
-  h.n = axis * (inside ? sign(dot(axis, d)) : -sign(dot(axis, d)));
+  h.n = axis * (inside ? along : -along);
   // Snap the coordinate across the face onto the face's plane.
   h.p = r.o + t * r.d;
   h.p = mix(h.p, dot(h.n, axis) > 0.0 ? s.b : s.a, axis);
