@@ -1,6 +1,8 @@
 #include "core/image.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 
 #include "core/file_io.h"
@@ -63,6 +65,33 @@ bool read_hdr(const std::string& path, int* w, int* h, std::vector<float>* rgba)
   for (int y = 0; y < *h; ++y)
     for (int i = 0; i < *w * 4; ++i) (*rgba)[size_t(*h - 1 - y) * *w * 4 + i] = p[size_t(y) * *w * 4 + i];
   stbi_image_free(p);
+  return true;
+}
+
+bool write_pfm(const std::string& path, int w, int h, const std::vector<float>& rgba) {
+  std::string bytes = "PF\n" + std::to_string(w) + " " + std::to_string(h) + "\n-1.0\n";
+  const size_t header = bytes.size();
+  bytes.resize(header + size_t(w) * h * 12);
+  float* out = reinterpret_cast<float*>(&bytes[header]);
+  for (size_t i = 0; i < size_t(w) * h; ++i)  // PFM rows run bottom to top, as GL's do
+    for (size_t c = 0; c < 3; ++c) out[i * 3 + c] = rgba[i * 4 + c];
+  return write_file_atomic(path, bytes.data(), bytes.size());
+}
+
+bool read_pfm(const std::string& path, int* w, int* h, std::vector<float>* rgba) {
+  const auto bytes = read_file(path);
+  if (!bytes || bytes->compare(0, 3, "PF\n") != 0) return false;
+  double scale = 0;
+  int consumed = 0;
+  if (std::sscanf(bytes->c_str() + 3, "%d %d %lf%n", w, h, &scale, &consumed) != 3 || *w <= 0 || *h <= 0 || scale >= 0)
+    return false;  // only little-endian (negative scale) files, as written above
+  const size_t header = 3 + size_t(consumed) + 1;
+  const size_t n = size_t(*w) * size_t(*h);
+  if (bytes->size() < header + n * 12) return false;
+  rgba->assign(n * 4, 1.0f);
+  const char* p = bytes->data() + header;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t c = 0; c < 3; ++c) std::memcpy(&(*rgba)[i * 4 + c], p + (i * 3 + c) * 4, 4);
   return true;
 }
 

@@ -14,6 +14,10 @@ bool write_png(const std::string& path, int w, int h, const std::vector<uint8_t>
 bool write_hdr(const std::string& path, int w, int h, const std::vector<float>& rgba);
 // Reads a Radiance .hdr (or anything stb_image reads as float) into RGBA, rows bottom to top.
 bool read_hdr(const std::string& path, int* w, int* h, std::vector<float>* rgba);
+// Portable float map (little-endian RGB float32): lossless linear images, used for
+// benchmark references where RGBE's 8-bit mantissa would put a floor under the error.
+bool write_pfm(const std::string& path, int w, int h, const std::vector<float>& rgba);
+bool read_pfm(const std::string& path, int* w, int* h, std::vector<float>* rgba);
 
 struct ImageStats {
   glm::dvec3 mean{0.0};

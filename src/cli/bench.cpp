@@ -1,0 +1,137 @@
+// `bench`: speed against error. Renders for a fixed time and records, at 1, 2, 4, ...
+// samples per pixel, the render time (draws only, finished with glFinish; readbacks and
+// metrics are outside the clock), relMSE and RMSE against a reference, and the rays cast
+// (counted in the shader). `plot` draws CSVs as log-log curves in an SVG.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "cli/options.h"
+#include "core/file_io.h"
+#include "core/image.h"
+#include "core/metrics.h"
+#include "core/svg_plot.h"
+#include "gpu/gl.h"
+#include "platform/egl.h"
+#include "scene/xml_loader.h"
+
+namespace pt::cli {
+
+int run_bench(const Options& o) {
+  if (o.reference.empty() == (o.reference_value < 0)) usage_error("bench needs one of --reference or --reference-value");
+  const Scene scene = load_scene_file(o.scene);
+  std::vector<float> ref(4, float(o.reference_value));
+  if (!o.reference.empty()) {
+    int w = 0, h = 0;
+    const bool pfm = o.reference.size() > 4 && o.reference.compare(o.reference.size() - 4, 4, ".pfm") == 0;
+    if (!(pfm ? read_pfm(o.reference, &w, &h, &ref) : read_hdr(o.reference, &w, &h, &ref)))
+      throw std::runtime_error(o.reference + ": cannot read the reference image");
+    if (w != o.width || h != o.height)
+      throw std::runtime_error(o.reference + ": reference is " + std::to_string(w) + "x" + std::to_string(h) + ", not " +
+                               std::to_string(o.width) + "x" + std::to_string(o.height));
+  }
+  HeadlessGl gl;
+  std::printf("GL: %s\n", gl.description().c_str());
+  Renderer r;
+  r.resize(o.width, o.height);
+  RenderSettings settings = o.settings;
+  settings.sample_limit = 0;
+  r.set_settings(settings);
+  r.set_scene(scene);
+  std::printf("shader: %zu bytes, compiled and linked in %.1f ms\n", r.integrator_source().text.size(), r.compile_ms());
+
+  struct Row {
+    int spp;
+    double seconds;
+    ErrorMetrics e;
+    double rays;
+  };
+  std::vector<Row> rows;
+  int draw_spp = o.per_pass > 0 ? o.per_pass : 1, next = 1;
+  double secs = 0;
+  glFinish();
+  while (secs < o.seconds) {
+    settings.spp_per_pass = std::min(draw_spp, next - r.samples());
+    r.set_settings(settings);
+    const auto t0 = std::chrono::steady_clock::now();
+    r.step();
+    glFinish();
+    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    secs += dt;
+    if (o.per_pass == 0) {
+      RenderSettings s;
+      s.spp_per_pass = draw_spp;
+      adapt_pass_size(dt * 1000.0, s);
+      draw_spp = s.spp_per_pass;
+    }
+    if (r.samples() == next || secs >= o.seconds) {
+      rows.push_back({r.samples(), secs, image_error(r.read_radiance(), ref), r.counters().rays});
+      if (r.samples() == next) next *= 2;
+    }
+  }
+  const Row& last = rows.back();
+  std::printf("%s: %d spp in %.3f s at %dx%d: %.2f spp/s, %.1f Mrays/s; relMSE %.4g, RMSE %.4g\n",
+              o.label.empty() ? o.scene.c_str() : o.label.c_str(), last.spp, last.seconds, o.width, o.height,
+              last.spp / last.seconds, last.rays / last.seconds * 1e-6, last.e.rel_mse, last.e.rmse);
+  std::ostringstream csv;
+  csv << "label,spp,seconds,rel_mse,rmse,rays\n";
+  csv.precision(9);
+  for (const Row& row : rows)
+    csv << (o.label.empty() ? o.scene : o.label) << "," << row.spp << "," << row.seconds << "," << row.e.rel_mse << ","
+        << row.e.rmse << "," << row.rays << "\n";
+  if (!o.csv.empty()) {
+    const std::string text = csv.str();
+    if (!write_file_atomic(o.csv, text.data(), text.size())) throw std::runtime_error("cannot write " + o.csv);
+    std::printf("wrote %s\n", o.csv.c_str());
+  } else {
+    std::fputs(csv.str().c_str(), stdout);
+  }
+  return 0;
+}
+
+int run_plot(int argc, char** argv) {
+  if (argc < 2) usage_error("plot needs OUT.svg and CSV files");
+  const std::string out = argv[0];
+  std::string x = "seconds", title = "relMSE against time";
+  std::map<std::string, PlotSeries> by_label;
+  std::vector<std::string> order;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--x") && i + 1 < argc) {
+      x = argv[++i];
+      if (x != "seconds" && x != "spp") usage_error("--x takes seconds or spp");
+      continue;
+    }
+    if (!std::strcmp(argv[i], "--title") && i + 1 < argc) {
+      title = argv[++i];
+      continue;
+    }
+    const auto text = read_file(argv[i]);
+    if (!text) throw std::runtime_error(std::string(argv[i]) + ": cannot read");
+    std::istringstream in(*text);
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+      std::istringstream l(line);
+      std::string label, f[5];
+      std::getline(l, label, ',');
+      for (std::string& s : f) std::getline(l, s, ',');
+      if (!by_label.count(label)) order.push_back(label);
+      PlotSeries& s = by_label[label];
+      s.label = label;
+      s.x.push_back(std::stod(x == "spp" ? f[0] : f[1]));
+      s.y.push_back(std::stod(f[2]));
+    }
+  }
+  std::vector<PlotSeries> series;
+  for (const std::string& l : order) series.push_back(by_label[l]);
+  const std::string svg = svg_loglog_plot(series, title, x == "spp" ? "samples per pixel" : "seconds", "relMSE");
+  if (!write_file_atomic(out, svg.data(), svg.size())) throw std::runtime_error("cannot write " + out);
+  std::printf("wrote %s\n", out.c_str());
+  return 0;
+}
+
+}  // namespace pt::cli

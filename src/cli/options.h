@@ -1,0 +1,36 @@
+// Command-line options shared by `render` and `bench`.
+#pragma once
+#include <string>
+
+#include "render/renderer.h"
+
+namespace pt::cli {
+
+struct Options {
+  std::string scene;
+  int width = 512, height = 512;
+  int spp = 64;         // render: samples per pixel
+  int per_pass = 0;     // 0: adapt the draw size to the measured time
+  std::string out = "out.png";
+  bool auto_exposure = false;
+  RenderSettings settings;
+  // bench
+  double seconds = 10;
+  std::string reference;         // .pfm or .hdr
+  double reference_value = -1;   // a constant (analytic) reference instead
+  std::string csv, label;
+};
+
+extern const char* const kUsage;
+[[noreturn]] void usage_error(const std::string& msg);
+Options parse_options(int argc, char** argv, bool bench);
+
+// Keeps one draw near 40 ms: long enough to amortise per-draw cost, short enough that
+// no watchdog fires. Adjusts settings.spp_per_pass from the last draw's time.
+void adapt_pass_size(double draw_ms, RenderSettings& settings);
+
+int run_render(const Options& o);
+int run_bench(const Options& o);
+int run_plot(int argc, char** argv);
+
+}  // namespace pt::cli
