@@ -57,10 +57,11 @@ vec3 trace_path(Ray r) {
     vec3 n = entering ? h.n : -h.n;  // faces the side the ray came from
     Frame fr = frame_from(n);
     vec3 wo = to_local(fr, -r.d);
-    vec3 u_light = vec3(rand01(), rand01(), rand01());
+    vec4 u_light = next4();  // xyz: light choice and point; w: Russian roulette
+    vec4 u_bsdf = next4();
     if (u_nee != 0 && u_num_lights > 0 && !material_is_delta(m)) {
       LightSample ls;
-      if (light_sample(p, u_light, ls)) {
+      if (light_sample(p, u_light.xyz, ls)) {
         float pdf_b;
         vec3 f = material_eval(m, wo, to_local(fr, ls.wi), entering, pdf_b);
         if (max3(f) > 0.0) {
@@ -70,7 +71,7 @@ vec3 trace_path(Ray r) {
       }
     }
     BsdfSample bs;
-    if (!material_sample(m, wo, entering, vec3(rand01(), rand01(), rand01()), bs)) break;
+    if (!material_sample(m, wo, entering, u_bsdf.xyz, bs)) break;
     beta *= bs.weight;
     prev_pdf = bs.pdf;
     prev_delta = bs.delta;
@@ -79,7 +80,7 @@ vec3 trace_path(Ray r) {
     r = Ray(offset_origin(p, n, wi), wi);
     if (bounce >= 3) {
       float q = min(max3(beta), 0.95);
-      if (rand01() >= q) break;
+      if (u_light.w >= q) break;
       beta /= q;
     }
   }
@@ -93,8 +94,9 @@ void main() {
   float bad = 0.0;
   g_rays = 0;
   for (int s = 0; s < u_spp; ++s) {
-    rng_init(uvec2(px), uint(u_sample_base + s));
-    vec2 ndc = (vec2(px) + vec2(rand01(), rand01())) / u_size * 2.0 - 1.0;
+    sampler_init(uvec2(px), uint(u_sample_base + s));
+    vec4 u_cam = next4();
+    vec2 ndc = (vec2(px) + u_cam.xy) / u_size * 2.0 - 1.0;
     vec3 d = normalize(u_cam_fwd + ndc.x * u_cam_right + ndc.y * u_cam_up);
     vec3 c = trace_path(Ray(u_cam_pos, d));
     if (non_finite(c)) {

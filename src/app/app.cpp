@@ -17,11 +17,13 @@ namespace {
 
 // Frame pacing. WebGL calls only queue commands, so the CPU time of step() says little
 // about the GPU; but once the GPU falls behind, the browser delays the next animation
-// frame. The interval between frames is the feedback: add passes while frames keep
-// coming near 60 Hz, remove them when they slow down. A step whose CPU time exceeds the
-// budget means the command queue was full (the call blocked on the GPU): stop there.
+// frame until the queued work is done. The interval between frames is the feedback: add a
+// pass while frames come faster than kFastFrameMs, scale the passes down to the target
+// when a frame took longer than kSlowFrameMs. A step whose CPU time exceeds the budget
+// means the call blocked on the GPU (a full command queue, or a blocking driver): stop.
 constexpr double kFastFrameMs = 20.0;
 constexpr double kSlowFrameMs = 28.0;
+constexpr double kTargetFrameMs = 22.0;
 constexpr double kCpuBudgetMs = 12.0;
 constexpr int kMaxPassesPerFrame = 64;
 constexpr double kRateWindowMs = 3000.0;
@@ -105,7 +107,6 @@ void App::set_sample_limit(int n) { settings_.sample_limit = std::max(0, n); }
 void App::frame(int fb_w, int fb_h, double now_ms) {
   const double dt_ms = last_frame_ms_ < 0 ? 0.0 : now_ms - last_frame_ms_;
   last_frame_ms_ = now_ms;
-  if (dt_ms > 0 && dt_ms < 250) frame_ms_avg_ += 0.2 * (dt_ms - frame_ms_avg_);  // ignore stalls (hidden tab)
 
   const int w = options_.width > 0 ? options_.width : fb_w;
   const int h = options_.height > 0 ? options_.height : fb_h;
@@ -114,7 +115,7 @@ void App::frame(int fb_w, int fb_h, double now_ms) {
   handle_input(std::min(dt_ms, 100.0) * 1e-3);
   draw_panel();
   renderer_->set_settings(settings_);  // restarts only when the estimate changes
-  render_passes(now_ms);
+  render_passes(now_ms, dt_ms);
   present(fb_w, fb_h);
 }
 
@@ -221,7 +222,12 @@ void App::draw_panel() {
   ImGui::End();
 }
 
-void App::render_passes(double now_ms) {
+void App::render_passes(double now_ms, double dt_ms) {
+  // The interval since the last frame measures the work queued then (and the hidden time
+  // of a background tab, after which the count simply grows back).
+  if (dt_ms > kSlowFrameMs)
+    passes_per_frame_ = std::max(1, int(std::min(0.9, kTargetFrameMs / dt_ms) * passes_per_frame_));
+
   if (renderer_->samples() == 0) restart_ms_ = now_ms;
   const auto t0 = std::chrono::steady_clock::now();
   int done = 0;
@@ -234,8 +240,8 @@ void App::render_passes(double now_ms) {
   }
   // Grow only when this frame used all its passes, else an idle (converged) image would
   // ratchet the count up and the next restart would start with one very long frame.
-  if (frame_ms_avg_ > kSlowFrameMs) passes_per_frame_ = std::max(1, passes_per_frame_ * 3 / 4);
-  else if (frame_ms_avg_ < kFastFrameMs && done == passes_per_frame_) passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
+  if (dt_ms > 0 && dt_ms < kFastFrameMs && done == passes_per_frame_)
+    passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
 
   if (!renderer_->converged()) done_ms_ = -1.0;  // a raised limit resumes the clock
   else if (done_ms_ < 0) done_ms_ = now_ms;

@@ -44,7 +44,7 @@ class App {
  private:
   void handle_input(double dt_s);
   void draw_panel();
-  void render_passes(double now_ms);
+  void render_passes(double now_ms, double dt_ms);
   void present(int fb_w, int fb_h);
   void scan_scenes();
 
@@ -57,7 +57,6 @@ class App {
 
   // Frame pacing: the number of passes per frame adapts to the interval between frames.
   double last_frame_ms_ = -1.0;
-  double frame_ms_avg_ = 16.7;
   int passes_per_frame_ = 1;
 
   // Progress: samples per second over the last few seconds of rendering (frames can be

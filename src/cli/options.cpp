@@ -16,6 +16,7 @@ const char* const kUsage =
     "  --bounces N       scattering events per path, 1..64 (default 8)\n"
     "  --spp-per-pass N  samples per draw; default adapts to keep each draw near 40 ms\n"
     "  --no-nee          BSDF sampling only (no next-event estimation / MIS)\n"
+    "  --sampler S       sobol (Owen-scrambled, default) or independent (PCG)\n"
     "  --tonemap NAME    none linear reinhard filmic srgb uncharted2 aces (default aces)\n"
     "render: --spp N (default 64); --out .png is tone-mapped, .hdr/.pfm linear radiance;\n"
     "        --exposure X multiplies before the tone map, 'auto' maps the log-average to 0.18\n"
@@ -67,6 +68,10 @@ Options parse_options(int argc, char** argv, bool bench) {
       o.per_pass = parse_int(next(), "--spp-per-pass", 1, 4096);
     } else if (a == "--no-nee") {
       o.settings.nee = false;
+    } else if (a == "--sampler") {
+      const std::string v = next();
+      if (v != "sobol" && v != "independent") usage_error("--sampler takes sobol or independent");
+      o.settings.sampler = v == "sobol" ? 1 : 0;
     } else if (a == "--tonemap") {
       const char* v = next();
       if (!tonemap_from_name(v, &o.settings.tonemap)) usage_error(std::string("unknown tone map: ") + v);

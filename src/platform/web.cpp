@@ -1,10 +1,10 @@
 // The web platform: a GLFW window on the page's canvas (WebGL 2), Dear ImGui's GLFW and
 // OpenGL 3 backends, the browser's animation-frame loop, and the hooks the page and the
 // browser tests call (window.ptStats and friends in web/index.html).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <memory>
 #include <string>
 
@@ -41,7 +41,6 @@ namespace {
 GLFWwindow* g_window = nullptr;
 std::unique_ptr<pt::App> g_app;
 std::string g_stats;
-float g_ui_scale = 1.0f;
 
 // The canvas fills the window through CSS; its drawing buffer follows in device pixels.
 // GLFW's own resize path is avoided: it requests fullscreen when the size equals the screen.
@@ -95,10 +94,10 @@ void init_imgui() {
   ImGui::GetStyle().WindowRounding = 4.0f;
   ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 0.85f;
   // Mouse and display are in device pixels: scale the UI instead of the framebuffer.
-  g_ui_scale = std::max(1.0f, float(emscripten_get_device_pixel_ratio()));
-  ImGui::GetStyle().ScaleAllSizes(g_ui_scale);
+  const float scale = std::max(1.0f, float(emscripten_get_device_pixel_ratio()));
+  ImGui::GetStyle().ScaleAllSizes(scale);
   ImFontConfig font;
-  font.SizePixels = std::round(13.0f * g_ui_scale);
+  font.SizePixels = std::round(13.0f * scale);
   io.Fonts->AddFontDefault(&font);
   ImGui_ImplGlfw_InitForOpenGL(g_window, true);
   glfwSetScrollCallback(g_window, scroll_callback);

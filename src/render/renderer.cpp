@@ -106,6 +106,7 @@ int Renderer::step() {
   p.set("u_num_lights", num_lights_);
   p.set("u_max_bounces", settings_.max_bounces);
   p.set("u_nee", settings_.nee ? 1 : 0);
+  p.set("u_sampler", settings_.sampler);
   p.set("u_dot_weight", dot_weight_ ? 1 : 0);
   p.set("u_spp", spp);
   p.set("u_sample_base", samples_);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "render/records.h"
+#include "render/sobol.h"
 #include "shadergen/embedded.h"
 
 namespace pt {
@@ -141,7 +142,8 @@ std::string generate_prelude(const Features& f) {
     if (f.has(MaterialKind(i))) g += "#define HAS_MAT_" + upper(kMaterialKinds[i].glsl) + " 1\n";
   g += "#include \"common.glsl\"\n";
   g += glsl_record(shape_layout()) + glsl_record(material_layout()) + glsl_record(light_layout());
-  g += "#include \"rng.glsl\"\n#include \"sampling.glsl\"\n";
+  g += glsl_sobol_table();
+  g += "#include \"rng.glsl\"\n#include \"sampler.glsl\"\n#include \"sampling.glsl\"\n";
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i))) g += "#include \"shapes/" + std::string(kShapeKinds[i].glsl) + ".glsl\"\n";
   for (int i = 0; i < kNumMaterialKinds; ++i)
