@@ -23,6 +23,7 @@ namespace pt::cli {
 
 int run_bench(const Options& o) {
   if (o.reference.empty() == (o.reference_value < 0)) usage_error("bench needs one of --reference or --reference-value");
+  const double duration = o.seconds > 0 ? o.seconds : 10.0;
   const Scene scene = load_scene_file(o.scene);
   std::vector<float> ref(4, float(o.reference_value));
   if (!o.reference.empty()) {
@@ -54,7 +55,7 @@ int run_bench(const Options& o) {
   int draw_spp = o.per_pass > 0 ? o.per_pass : 1, next = 1;
   double secs = 0;
   glFinish();
-  while (secs < o.seconds) {
+  while (secs < duration) {
     settings.spp_per_pass = std::min(draw_spp, next - r.samples());
     r.set_settings(settings);
     const auto t0 = std::chrono::steady_clock::now();
@@ -68,7 +69,7 @@ int run_bench(const Options& o) {
       adapt_pass_size(dt * 1000.0, s);
       draw_spp = s.spp_per_pass;
     }
-    if (r.samples() == next || secs >= o.seconds) {
+    if (r.samples() == next || secs >= duration) {
       rows.push_back({r.samples(), secs, image_error(r.read_radiance(), ref), r.counters().rays});
       if (r.samples() == next) next *= 2;
     }

@@ -25,8 +25,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 int run_render(const Options& o) {
-  if (!ends_with(o.out, ".png") && !ends_with(o.out, ".hdr") && !ends_with(o.out, ".pfm"))
-    usage_error("--out must end in .png, .hdr or .pfm");
+  for (const std::string& out : o.outs)
+    if (!ends_with(out, ".png") && !ends_with(out, ".hdr") && !ends_with(out, ".pfm"))
+      usage_error("--out must end in .png, .hdr or .pfm");
   const Scene scene = load_scene_file(o.scene);  // before GL: bad input fails fast
   HeadlessGl gl;
   std::printf("GL: %s\n", gl.description().c_str());
@@ -43,7 +44,7 @@ int run_render(const Options& o) {
 
   glFinish();
   const auto t0 = std::chrono::steady_clock::now();
-  while (!r.converged()) {
+  while (!r.converged() && (o.seconds <= 0 || seconds_since(t0) < o.seconds)) {
     const auto tp = std::chrono::steady_clock::now();
     r.step();
     glFinish();
@@ -66,15 +67,17 @@ int run_render(const Options& o) {
     r.set_settings(settings);
     std::printf("auto exposure: %.4f\n", settings.exposure);
   }
-  bool ok = false;
-  if (ends_with(o.out, ".png")) ok = write_png(o.out, o.width, o.height, r.read_display());
-  if (ends_with(o.out, ".hdr")) ok = write_hdr(o.out, o.width, o.height, radiance);
-  if (ends_with(o.out, ".pfm")) ok = write_pfm(o.out, o.width, o.height, radiance);
-  if (!ok) {
-    std::fprintf(stderr, "pathtracer: cannot write %s\n", o.out.c_str());
-    return 1;
+  for (const std::string& out : o.outs) {
+    bool ok = false;
+    if (ends_with(out, ".png")) ok = write_png(out, o.width, o.height, r.read_display());
+    if (ends_with(out, ".hdr")) ok = write_hdr(out, o.width, o.height, radiance);
+    if (ends_with(out, ".pfm")) ok = write_pfm(out, o.width, o.height, radiance);
+    if (!ok) {
+      std::fprintf(stderr, "pathtracer: cannot write %s\n", out.c_str());
+      return 1;
+    }
+    std::printf("wrote %s\n", out.c_str());
   }
-  std::printf("wrote %s\n", o.out.c_str());
   return st.bad == 0 && counters.bad_samples == 0 ? 0 : 3;
 }
 

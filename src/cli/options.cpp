@@ -18,7 +18,8 @@ const char* const kUsage =
     "  --no-nee          BSDF sampling only (no next-event estimation / MIS)\n"
     "  --sampler S       sobol (Owen-scrambled, default) or independent (PCG)\n"
     "  --tonemap NAME    none linear reinhard filmic srgb uncharted2 aces (default aces)\n"
-    "render: --spp N (default 64); --out .png is tone-mapped, .hdr/.pfm linear radiance;\n"
+    "render: --spp N (default 64), or until --seconds S if that comes first (references);\n"
+    "        --out .png is tone-mapped, .hdr/.pfm linear radiance (--out may repeat);\n"
     "        --exposure X multiplies before the tone map, 'auto' maps the log-average to 0.18\n"
     "bench:  renders for S seconds; at 1, 2, 4, ... spp records time, relMSE and RMSE\n"
     "        against the reference (same size) in CSV; prints samples/s and rays/s\n"
@@ -78,12 +79,12 @@ Options parse_options(int argc, char** argv, bool bench) {
     } else if (!bench && a == "--spp") {
       o.spp = parse_int(next(), "--spp", 1, 1 << 24);
     } else if (!bench && a == "--out") {
-      o.out = next();
+      o.outs.push_back(next());
     } else if (!bench && a == "--exposure") {
       const char* v = next();
       o.auto_exposure = !std::strcmp(v, "auto");
       if (!o.auto_exposure) o.settings.exposure = float(parse_positive(v, "--exposure"));
-    } else if (bench && a == "--seconds") {
+    } else if (a == "--seconds") {
       o.seconds = parse_positive(next(), "--seconds");
     } else if (bench && a == "--reference") {
       o.reference = next();
@@ -97,6 +98,7 @@ Options parse_options(int argc, char** argv, bool bench) {
       usage_error("unknown option " + a);
     }
   }
+  if (o.outs.empty()) o.outs.push_back("out.png");
   return o;
 }
 

@@ -1,6 +1,7 @@
 // Command-line options shared by `render` and `bench`.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "render/renderer.h"
 
@@ -11,11 +12,11 @@ struct Options {
   int width = 512, height = 512;
   int spp = 64;         // render: samples per pixel
   int per_pass = 0;     // 0: adapt the draw size to the measured time
-  std::string out = "out.png";
+  std::vector<std::string> outs;  // render: --out may repeat (default out.png)
   bool auto_exposure = false;
   RenderSettings settings;
   // bench
-  double seconds = 10;
+  double seconds = 0;  // bench: duration (default 10); render: optional time limit
   std::string reference;         // .pfm or .hdr
   double reference_value = -1;   // a constant (analytic) reference instead
   std::string csv, label;

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
+# here (cmake --build --preset native), then run there with build/native/pathtracer and
+# .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
+#   bash tools/bench_device.sh cornell|scenes|speed
+# Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
+set -uo pipefail
+part="${1:?part: cornell, scenes or speed}"
+for f in .gl/*.deb; do dpkg -x "$f" /; done
+ldconfig
+nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+[[ -f $nv ]] && export __EGL_VENDOR_LIBRARY_FILENAMES=$nv
+out="${OUT:-out}"
+w="$out/work"
+mkdir -p "$w"
+exec > >(tee "$w/log-$part.txt") 2>&1
+nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv,noheader || true
+date -u
+B=build/native/pathtracer
+S=1920x1080
+curves() {  # scene name ref-args...
+  local scene=$1 name=$2; shift 2
+  for nee in nee no-nee; do
+    for smp in sobol independent; do
+      local flags=(--sampler "$smp")
+      [[ $nee == no-nee ]] && flags+=(--no-nee)
+      $B bench "$scene" --size $S --seconds "${SECS:-10}" "$@" "${flags[@]}" --label "$name $nee $smp" --csv "$w/$name-$nee-$smp.csv"
+    done
+  done
+  $B plot "$w/$name-time.svg" --title "$name $S: relMSE against time" "$w/$name"-*.csv
+  $B plot "$w/$name-spp.svg" --x spp --title "$name $S: relMSE against samples per pixel" "$w/$name"-*.csv
+}
+case "$part" in
+  cornell)
+    $B render scenes/cornell-box.xml --size $S --spp 1000000 --seconds 150 --out "$w/cornell-ref.pfm" --out "$w/cornell-ref.png"
+    curves scenes/cornell-box.xml cornell --reference "$w/cornell-ref.pfm"
+    ;;
+  scenes)
+    for s in 0 1 2; do
+      $B render scenes/reference/scene$s.xml --size $S --spp 1000000 --seconds 60 --out "$w/scene$s-ref.pfm" --out "$w/scene$s-ref.png"
+      $B bench scenes/reference/scene$s.xml --size $S --seconds 10 --reference "$w/scene$s-ref.pfm" --label "scene$s" --csv "$w/scene$s.csv"
+    done
+    $B plot "$w/reference-scenes-time.svg" --title "Reference scenes $S: relMSE against time" "$w"/scene?.csv
+    SECS=5 curves scenes/analytic/closed-room.xml room --bounces 64 --reference-value 2
+    ;;
+  speed)
+    for s in scenes/reference/scene0.xml scenes/reference/scene1.xml scenes/reference/scene2.xml scenes/cornell-box.xml; do
+      $B render "$s" --size 512x512 --spp 2048 --out "$w/$(basename "$s" .xml)-512.png"
+    done
+    ;;
+esac
+rm -f "$w"/*.pfm
+tar -czf "$out/results-$part.tar.gz" -C "$w" .
