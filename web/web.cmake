@@ -14,7 +14,7 @@ target_link_libraries(pathtracer_web PRIVATE pt_core pt_imgui)
 target_compile_options(pathtracer_web PRIVATE ${PT_WARNINGS} -fexceptions)
 
 set(PT_WEB_SHELL_FILES index.html style.css)
-set(PT_EXPORTS _main _malloc _free _pt_stats_json _pt_set_size _pt_set_sample_limit _pt_radiance _pt_load_scene)
+set(PT_EXPORTS _main _malloc _free _pt_stats_json _pt_set_size _pt_set_sample_limit _pt_radiance _pt_display _pt_load_scene)
 list(JOIN PT_EXPORTS "," PT_EXPORTS_CSV)
 target_link_options(pathtracer_web PRIVATE
   -fexceptions
@@ -23,6 +23,12 @@ target_link_options(pathtracer_web PRIVATE
   -sEXPORTED_FUNCTIONS=${PT_EXPORTS_CSV}
   -sEXPORTED_RUNTIME_METHODS=UTF8ToString,stringToUTF8,lengthBytesUTF8
   --preload-file "${CMAKE_SOURCE_DIR}/scenes@/scenes")
+
+# Debian's emcc runs its JavaScript optimizer with node, which finds acorn and friends only
+# through NODE_PATH: set it for the link step so a plain `cmake --build` works.
+if(EXISTS /usr/share/nodejs/acorn)
+  set_property(TARGET pathtracer_web PROPERTY RULE_LAUNCH_LINK "${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs")
+endif()
 
 # Re-link when a scene changes (the .data package is written by the link step).
 file(GLOB_RECURSE PT_WEB_SCENES CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/scenes/*")
