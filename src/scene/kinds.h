@@ -3,16 +3,19 @@
 // iterate these lists. Adding a kind = its files (parser, shapes/<name>.glsl or
 // materials/<name>.glsl, test) plus one line here.
 //
-//   Shapes:    X(Enum, glsl_name, "XmlElement", samplable)  samplable: an emissive one is
-//              light-sampled (its snippet defines sample_light_<name> / pdf_light_<name>)
+//   Shapes:    X(Enum, glsl_name, "XmlElement", samplable, per_ray)
+//              samplable: an emissive one is light-sampled (its snippet defines
+//              sample_light_<name> / pdf_light_<name>); per_ray: its intersection uses
+//              data computed once per ray (<Name>Ray prepare_<name>(Ray), passed to
+//              intersect_<name> after the ray)
 //   Materials: X(Enum, glsl_name, "XmlElement")
 #pragma once
 
 #define PT_SHAPE_KINDS(X)                   \
-  X(Sphere, sphere, "Sphere", true)         \
-  X(Box, box, "Box", true)                  \
-  X(Plane, plane, "Plane", false)           \
-  X(Triangle, triangle, "Triangle", true)
+  X(Sphere, sphere, "Sphere", true, false)  \
+  X(Box, box, "Box", true, true)            \
+  X(Plane, plane, "Plane", false, false)    \
+  X(Triangle, triangle, "Triangle", true, true)
 
 // Material kinds are what a surface does with light. Attenuate is not a kind: it is a
 // modifier that multiplies the tint of the material it wraps (any depth of nesting).
@@ -27,7 +30,7 @@
 namespace pt {
 
 enum class ShapeKind : int {
-#define PT_X(e, g, x, l) e,
+#define PT_X(e, g, x, l, r) e,
   PT_SHAPE_KINDS(PT_X)
 #undef PT_X
 };
@@ -41,15 +44,16 @@ struct KindInfo {
   const char* glsl;  // snippet name and function suffix: shapes/sphere.glsl, intersect_sphere
   const char* xml;   // element name in scene files
   bool samplable;    // shapes: emitters of this kind are light-sampled
+  bool per_ray;      // shapes: intersection takes per-ray data from prepare_<glsl>
 };
 
 inline constexpr KindInfo kShapeKinds[] = {
-#define PT_X(e, g, x, l) {#g, x, l},
+#define PT_X(e, g, x, l, r) {#g, x, l, r},
     PT_SHAPE_KINDS(PT_X)
 #undef PT_X
 };
 inline constexpr KindInfo kMaterialKinds[] = {
-#define PT_X(e, g, x) {#g, x, false},
+#define PT_X(e, g, x) {#g, x, false, false},
     PT_MATERIAL_KINDS(PT_X)
 #undef PT_X
 };

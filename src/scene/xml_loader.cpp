@@ -54,7 +54,7 @@ struct ShapeParser {
   void (*parse)(XmlAttrs&, Shape&);
 };
 constexpr ShapeParser kShapeParsers[] = {
-#define PT_X(e, g, x, l) {x, ShapeKind::e, &parse_##g},
+#define PT_X(e, g, x, l, r) {x, ShapeKind::e, &parse_##g},
     PT_SHAPE_KINDS(PT_X)
 #undef PT_X
 };
@@ -245,7 +245,7 @@ struct Loader {
     XmlAttrs a(r, file);
     scene.dot_weight = a.boolean("dotWeight", true);
     a.finish();
-    bool have_camera = false, have_objects = false;
+    bool have_camera = false, have_objects = false, have_env = false;
     for (const XMLElement* e = r->FirstChildElement(); e; e = e->NextSiblingElement()) {
       const char* n = e->Name();
       if (!std::strcmp(n, "Camera")) {
@@ -254,6 +254,16 @@ struct Loader {
         camera(e);
       } else if (!std::strcmp(n, "Light")) {
         light(e);
+      } else if (!std::strcmp(n, "Environment")) {
+        // Extension: <Environment color="r g b"/>, the constant radiance of rays that leave
+        // the scene (default 0.5 grey, the seed's constant environment).
+        if (have_env) fail(e, "a second <Environment>");
+        have_env = true;
+        XmlAttrs a(e, file);
+        scene.environment.color = a.vec3("color");
+        if (glm::any(glm::lessThan(scene.environment.color, glm::vec3(0.0f)))) a.fail("'color' must be >= 0");
+        a.finish();
+        if (e->FirstChildElement()) a.fail("takes no child elements");
       } else if (!std::strcmp(n, "Objects")) {
         if (have_objects) fail(e, "a second <Objects>");
         have_objects = true;

@@ -122,6 +122,16 @@ TEST_CASE("malformed scenes give file, line and problem", "[loader]") {
   CHECK(error_of(h + "<Light position=\"0 0 0\" radius=\"0\"/></SceneLevel>") == "bad.xml:4: <Light>: 'radius' must be positive");
 }
 
+TEST_CASE("Environment sets the constant background radiance, strictly", "[loader]") {
+  const std::string h = kHead;
+  const std::string obj = "<Objects><Sphere center=\"0 0 0\" radius=\"1\"><Diffuse/></Sphere></Objects>";
+  CHECK(load_scene_text(h + obj + "</SceneLevel>", "x.xml").environment.color == glm::vec3(0.5f));
+  CHECK(load_scene_text(h + "<Environment color=\"0 0.1 2\"/>" + obj + "</SceneLevel>", "x.xml").environment.color ==
+        glm::vec3(0.0f, 0.1f, 2.0f));
+  CHECK(error_of(h + "<Environment color=\"0 -1 0\"/>" + obj + "</SceneLevel>") == "bad.xml:4: <Environment>: 'color' must be >= 0");
+  CHECK(error_of(h + "<Environment/>" + obj + "</SceneLevel>") == "bad.xml:4: <Environment>: missing attribute 'color'");
+}
+
 TEST_CASE("a missing scene file is an error naming the file", "[loader]") {
   try {
     load_scene_file("/nonexistent/scene.xml");

@@ -152,11 +152,17 @@ std::string generate_prelude(const Features& f) {
   // Dispatch over the kinds present, in list order.
   g += "uniform int u_num_shapes;\n";
   g += "Hit scene_intersect(Ray r) {\n  ++g_rays;\n  Hit h = Hit(T_INF, -1, vec3(0.0), vec3(0.0));\n";
+  for (int i = 0; i < kNumShapeKinds; ++i)
+    if (f.has(ShapeKind(i)) && kShapeKinds[i].per_ray) {
+      std::string cap = kShapeKinds[i].glsl;
+      cap[0] = char(std::toupper(cap[0]));
+      g += "  " + cap + "Ray " + kShapeKinds[i].glsl + "_ray = prepare_" + kShapeKinds[i].glsl + "(r);\n";
+    }
   g += "  for (int i = 0; i < u_num_shapes; ++i) {\n    ShapeRec s = load_shape(i);\n";
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i)))
-      g += std::string("    if (s.kind == SHAPE_") + upper(kShapeKinds[i].glsl) + ") intersect_" + kShapeKinds[i].glsl +
-           "(s, i, r, h);\n";
+      g += std::string("    if (s.kind == SHAPE_") + upper(kShapeKinds[i].glsl) + ") intersect_" + kShapeKinds[i].glsl + "(s, i, r, " +
+           (kShapeKinds[i].per_ray ? std::string(kShapeKinds[i].glsl) + "_ray, " : std::string()) + "h);\n";
   g += "  }\n  return h;\n}\n";
   std::string delta = "bool material_is_delta(MaterialRec m) {\n";
   std::string eval = "vec3 material_eval(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {\n";

@@ -3,14 +3,19 @@
 // nothing when the origin lies within the closed slab and rejects the ray otherwise; it
 // is handled explicitly, so 0 * inf never makes a NaN and a ray lying in a face plane
 // hits the box the same way whichever face (min or max) it lies in.
-void intersect_box(ShapeRec s, int id, Ray r, inout Hit h) {
-  bvec3 parallel = lessThan(abs(r.d), vec3(1e-30));
-  if (any(parallel) && any(bvec3(uvec3(parallel) & (uvec3(lessThan(r.o, s.a)) | uvec3(greaterThan(r.o, s.b)))))) return;
-  vec3 inv = 1.0 / mix(r.d, vec3(1.0), parallel);
-  vec3 ta = (s.a - r.o) * inv;
-  vec3 tb = (s.b - r.o) * inv;
-  vec3 tmin = mix(min(ta, tb), vec3(-T_INF), parallel);
-  vec3 tmax = mix(max(ta, tb), vec3(T_INF), parallel);
+// Per ray, once: the reciprocal direction and which axes the ray runs parallel to.
+struct BoxRay { vec3 inv; bvec3 parallel; };
+BoxRay prepare_box(Ray r) {
+  bvec3 par = lessThan(abs(r.d), vec3(1e-30));
+  return BoxRay(1.0 / mix(r.d, vec3(1.0), par), par);
+}
+
+void intersect_box(ShapeRec s, int id, Ray r, BoxRay br, inout Hit h) {
+  if (any(br.parallel) && any(bvec3(uvec3(br.parallel) & (uvec3(lessThan(r.o, s.a)) | uvec3(greaterThan(r.o, s.b)))))) return;
+  vec3 ta = (s.a - r.o) * br.inv;
+  vec3 tb = (s.b - r.o) * br.inv;
+  vec3 tmin = mix(min(ta, tb), vec3(-T_INF), br.parallel);
+  vec3 tmax = mix(max(ta, tb), vec3(T_INF), br.parallel);
   float t_near = max3(tmin);
   float t_far = min(min(tmax.x, tmax.y), tmax.z);
   if (t_near > t_far || t_far <= 0.0) return;
@@ -44,17 +49,17 @@ bool sample_light_box(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf) {
   pdf = 0.0;
   if (total <= 0.0) return false;
   float pick = u.x * total;
-  int axis = pick < area.x ? 0 : (pick < area.x + area.y ? 1 : 2);
-  float before = axis == 0 ? 0.0 : (axis == 1 ? area.x : area.x + area.y);
-  float v = clamp((pick - before) / area[axis], 0.0, 1.0);
-  // (v, u.y) spans the face: the two axes other than `axis`, in order.
-  vec3 f = axis == 0 ? vec3(0.0, v, u.y) : (axis == 1 ? vec3(v, 0.0, u.y) : vec3(v, u.y, 0.0));
+  // The chosen face as an axis mask; (v, u.y) span its two other axes, in order.
+  vec3 axis = pick < area.x ? vec3(1, 0, 0) : (pick < area.x + area.y ? vec3(0, 1, 0) : vec3(0, 0, 1));
+  float before = dot(axis, vec3(0.0, area.x, area.x + area.y));
+  float v = clamp((pick - before) / dot(axis, area), 0.0, 1.0);
+  vec3 f = axis.x > 0.0 ? vec3(0.0, v, u.y) : (axis.y > 0.0 ? vec3(v, 0.0, u.y) : vec3(v, u.y, 0.0));
   vec3 q = mix(s.a, s.b, f);
-  q[axis] = p[axis] > s.b[axis] ? s.b[axis] : s.a[axis];
+  q = mix(q, mix(s.a, s.b, vec3(greaterThan(p, s.b))), axis);  // onto the face that p sees
   vec3 d = q - p;
   float t2 = dot(d, d);
   wi = d * inversesqrt(t2);
-  float cos_l = abs(wi[axis]);
+  float cos_l = abs(dot(wi, axis));
   if (cos_l <= 0.0) return false;
   pdf = t2 / (cos_l * total);
   return true;

@@ -19,37 +19,41 @@ float edge_function(vec3 p, vec3 q, vec2 ps, vec2 qs) {
   return vertex_before(p, q) ? ps.x * qs.y - ps.y * qs.x : -(qs.x * ps.y - qs.y * ps.x);
 }
 
-void intersect_triangle(ShapeRec s, int id, Ray r, inout Hit h) {
+// Per ray, once: the permutation and shear as three rows (so no vector is indexed by a
+// run-time value, which GPUs compile to slow local memory): for p relative to the ray
+// origin, (dot(x, p), dot(y, p)) are the 2D coordinates and dot(z, p) the scaled depth.
+struct TriangleRay { vec3 x; vec3 y; vec3 z; };
+TriangleRay prepare_triangle(Ray r) {
   vec3 ad = abs(r.d);
-  int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
-  int kx = kz == 2 ? 0 : kz + 1;
-  int ky = kx == 2 ? 0 : kx + 1;
-  if (r.d[kz] < 0.0) {
-    int tmp = kx;
-    kx = ky;
-    ky = tmp;
+  vec3 ez = ad.x > ad.y ? (ad.x > ad.z ? vec3(1, 0, 0) : vec3(0, 0, 1)) : (ad.y > ad.z ? vec3(0, 1, 0) : vec3(0, 0, 1));
+  vec3 ex = ez.zxy;  // the next axis after kz: (1,0,0) -> (0,1,0) -> (0,0,1) -> (1,0,0)
+  vec3 ey = ex.zxy;
+  float dz = dot(r.d, ez);
+  if (dz < 0.0) {  // keep the winding
+    vec3 tmp = ex;
+    ex = ey;
+    ey = tmp;
   }
-  float sz = 1.0 / r.d[kz];
-  float sx = r.d[kx] * sz;
-  float sy = r.d[ky] * sz;
+  float sz = 1.0 / dz;
+  return TriangleRay(ex - dot(r.d, ex) * sz * ez, ey - dot(r.d, ey) * sz * ez, sz * ez);
+}
+
+void intersect_triangle(ShapeRec s, int id, Ray r, TriangleRay tr, inout Hit h) {
   vec3 a = s.a - r.o, b = s.b - r.o, c = s.c - r.o;
-  vec2 a2 = vec2(a[kx] - sx * a[kz], a[ky] - sy * a[kz]);
-  vec2 b2 = vec2(b[kx] - sx * b[kz], b[ky] - sy * b[kz]);
-  vec2 c2 = vec2(c[kx] - sx * c[kz], c[ky] - sy * c[kz]);
+  vec2 a2 = vec2(dot(tr.x, a), dot(tr.y, a));
+  vec2 b2 = vec2(dot(tr.x, b), dot(tr.y, b));
+  vec2 c2 = vec2(dot(tr.x, c), dot(tr.y, c));
   float u = edge_function(s.c, s.b, c2, b2);  // cx * by - cy * bx
   float v = edge_function(s.a, s.c, a2, c2);  // ax * cy - ay * cx
   float w = edge_function(s.b, s.a, b2, a2);  // bx * ay - by * ax
   if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return;
   float det = u + v + w;
   if (det == 0.0) return;
-  float tt = (u * a[kz] + v * b[kz] + w * c[kz]) * sz;
-  float t = tt / det;
+  float t = (u * dot(tr.z, a) + v * dot(tr.z, b) + w * dot(tr.z, c)) / det;
   if (!(t > 0.0) || t >= h.t) return;
-  vec3 e1 = s.b - s.a;
-  vec3 e2 = s.c - s.a;
   h.t = t;
   h.id = id;
-  h.n = normalize(cross(e1, e2));
+  h.n = normalize(cross(s.b - s.a, s.c - s.a));
   h.p = (u * s.a + v * s.b + w * s.c) / det;  // barycentric: on the triangle's plane by construction
 }
 
