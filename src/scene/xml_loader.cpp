@@ -259,11 +259,11 @@ struct Loader {
         // the scene (default 0.5 grey, the seed's constant environment).
         if (have_env) fail(e, "a second <Environment>");
         have_env = true;
-        XmlAttrs a(e, file);
-        scene.environment.color = a.vec3("color");
-        if (glm::any(glm::lessThan(scene.environment.color, glm::vec3(0.0f)))) a.fail("'color' must be >= 0");
-        a.finish();
-        if (e->FirstChildElement()) a.fail("takes no child elements");
+        XmlAttrs env(e, file);
+        scene.environment.color = env.vec3("color");
+        if (glm::any(glm::lessThan(scene.environment.color, glm::vec3(0.0f)))) env.fail("'color' must be >= 0");
+        env.finish();
+        if (e->FirstChildElement()) env.fail("takes no child elements");
       } else if (!std::strcmp(n, "Objects")) {
         if (have_objects) fail(e, "a second <Objects>");
         have_objects = true;
