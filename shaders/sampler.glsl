@@ -1,11 +1,14 @@
 // sampler.glsl: the random numbers a path consumes, 4 dimensions at a time.
-//   u_sampler 0: independent uniform numbers (PCG), per pixel and sample index.
-//   u_sampler 1: Owen-scrambled Sobol points (Burley, "Practical Hash-based Owen
+//   u_sampler = 0: independent uniform numbers (PCG), per pixel and sample index.
+//   u_sampler = k > 0: the first k blocks are Owen-scrambled Sobol points (Burley, "Practical Hash-based Owen
 //     Scrambling", JCGT 2020): each 4D block of a path (camera, then two per bounce)
 //     draws point `index` of a 4D Sobol sequence whose order is shuffled and whose
 //     values are nested-uniform scrambled with seeds hashed from the pixel and the block,
 //     so pixels and blocks are decorrelated while each stays a (0,m,4)-style net.
-// Both are exact: the estimate is the same in expectation, only its error differs.
+//   Later blocks are independent: low-discrepancy sampling pays off in the first
+//   dimensions (pixel area, direct light at the first hit) and costs 32-step Sobol
+//   evaluations per block; docs/benchmarks.md measures k = 3 against all blocks.
+// All are exact: the estimate is the same in expectation, only its error differs.
 uniform int u_sampler;
 
 uint g_index;
@@ -57,6 +60,6 @@ vec4 owen_sobol4(uint index, uint seed) {
 
 vec4 next4() {
   uint b = g_block++;
-  if (u_sampler == 0) return vec4(rand01(), rand01(), rand01(), rand01());
+  if (b >= uint(u_sampler)) return vec4(rand01(), rand01(), rand01(), rand01());
   return owen_sobol4(g_index, pcg_hash(g_pixel_seed ^ (b * 0x9e3779b9u + 0x632be5abu)));
 }

@@ -11,17 +11,18 @@ ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
 [[ -f $nv ]] && export __EGL_VENDOR_LIBRARY_FILENAMES=$nv
 out="${OUT:-out}"
-w="$out/work"
+w="/tmp/work-$part"
 mkdir -p "$w"
 exec > >(tee "$w/log-$part.txt") 2>&1
 nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv,noheader || true
 date -u
 B=build/native/pathtracer
 S=1920x1080
+SAMPLERS="sobol independent"
 curves() {  # scene name ref-args...
   local scene=$1 name=$2; shift 2
   for nee in nee no-nee; do
-    for smp in sobol independent; do
+    for smp in $SAMPLERS; do
       local flags=(--sampler "$smp")
       [[ $nee == no-nee ]] && flags+=(--no-nee)
       $B bench "$scene" --size $S --seconds "${SECS:-10}" "$@" "${flags[@]}" --label "$name $nee $smp" --csv "$w/$name-$nee-$smp.csv"
@@ -32,6 +33,7 @@ curves() {  # scene name ref-args...
 }
 case "$part" in
   cornell)
+    SAMPLERS="sobol sobol-all independent"
     $B render scenes/cornell-box.xml --size $S --spp 1000000 --seconds 150 --out "$w/cornell-ref.pfm" --out "$w/cornell-ref.png"
     curves scenes/cornell-box.xml cornell --reference "$w/cornell-ref.pfm"
     ;;

@@ -16,7 +16,8 @@ const char* const kUsage =
     "  --bounces N       scattering events per path, 1..64 (default 8)\n"
     "  --spp-per-pass N  samples per draw; default adapts to keep each draw near 40 ms\n"
     "  --no-nee          BSDF sampling only (no next-event estimation / MIS)\n"
-    "  --sampler S       sobol (Owen-scrambled, default) or independent (PCG)\n"
+    "  --sampler S       sobol (Owen-scrambled Sobol for the camera and first bounce, default),\n"
+    "                    sobol-all (every bounce) or independent (PCG)\n"
     "  --tonemap NAME    none linear reinhard filmic srgb uncharted2 aces (default aces)\n"
     "render: --spp N (default 64), or until --seconds S if that comes first (references);\n"
     "        --out .png is tone-mapped, .hdr/.pfm linear radiance (--out may repeat);\n"
@@ -71,8 +72,8 @@ Options parse_options(int argc, char** argv, bool bench) {
       o.settings.nee = false;
     } else if (a == "--sampler") {
       const std::string v = next();
-      if (v != "sobol" && v != "independent") usage_error("--sampler takes sobol or independent");
-      o.settings.sampler = v == "sobol" ? 1 : 0;
+      if (v != "sobol" && v != "sobol-all" && v != "independent") usage_error("--sampler takes sobol, sobol-all or independent");
+      o.settings.sampler = v == "sobol" ? 3 : v == "sobol-all" ? 1 << 20 : 0;
     } else if (a == "--tonemap") {
       const char* v = next();
       if (!tonemap_from_name(v, &o.settings.tonemap)) usage_error(std::string("unknown tone map: ") + v);

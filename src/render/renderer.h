@@ -20,7 +20,7 @@ struct RenderSettings {
   int spp_per_pass = 1;  // samples per pixel in one draw
   int sample_limit = 0;  // stop after this many samples per pixel; 0 = never
   bool nee = true;       // next-event estimation with MIS (off: BSDF sampling only)
-  int sampler = 1;       // 0: independent (PCG), 1: Owen-scrambled Sobol
+  int sampler = 3;       // 4D blocks of a path drawn from Owen-scrambled Sobol (0: all independent)
   ToneMap tonemap = ToneMap::Aces;
   float exposure = 1.0f;
   bool operator==(const RenderSettings&) const = default;
