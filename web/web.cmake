@@ -2,22 +2,17 @@
 # when building with Emscripten. Outputs pathtracer.js/.wasm/.data next to our own HTML
 # shell (Debian's emcc cannot minify HTML, so it never writes the page itself).
 
-# Scene files report errors as exceptions (InputError, GlError): without catching support
-# Emscripten aborts on the first throw, so every C++ target that throws or unwinds needs it.
-target_compile_options(pt_core PUBLIC -fexceptions)
-
 add_executable(pathtracer_web
   "${CMAKE_SOURCE_DIR}/src/app/app.cpp"
   "${CMAKE_SOURCE_DIR}/src/platform/web.cpp")
 set_target_properties(pathtracer_web PROPERTIES OUTPUT_NAME pathtracer SUFFIX ".js")
 target_link_libraries(pathtracer_web PRIVATE pt_core pt_imgui)
-target_compile_options(pathtracer_web PRIVATE ${PT_WARNINGS} -fexceptions)
+target_compile_options(pathtracer_web PRIVATE ${PT_WARNINGS})
 
 set(PT_WEB_SHELL_FILES index.html style.css)
 set(PT_EXPORTS _main _malloc _free _pt_stats_json _pt_set_size _pt_set_sample_limit _pt_radiance _pt_display _pt_load_scene)
 list(JOIN PT_EXPORTS "," PT_EXPORTS_CSV)
 target_link_options(pathtracer_web PRIVATE
-  -fexceptions
   -sUSE_GLFW=3 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2
   -sALLOW_MEMORY_GROWTH=1
   -sEXPORTED_FUNCTIONS=${PT_EXPORTS_CSV}

@@ -9,6 +9,7 @@
 #include <GLFW/glfw3.h>  // key codes only: the ImGui GLFW backend indexes io.KeysDown by them
 #include <imgui.h>
 
+#include "core/image.h"
 #include "render/camera.h"
 #include "scene/xml_loader.h"
 
@@ -116,7 +117,17 @@ void App::frame(int fb_w, int fb_h, double now_ms) {
   draw_panel();
   renderer_->set_settings(settings_);  // restarts only when the estimate changes
   render_passes(now_ms, dt_ms);
+  update_auto_exposure();
   present(fb_w, fb_h);
+}
+
+void App::update_auto_exposure() {
+  const int n = renderer_->samples();
+  if (n < next_exposure_at_ / 2) next_exposure_at_ = 4;  // restarted since the last measure
+  if (!auto_exposure_ || n < next_exposure_at_) return;
+  settings_.exposure = float(auto_exposure(renderer_->read_radiance()));
+  renderer_->set_settings(settings_);
+  next_exposure_at_ = std::min(n * 2, n + 512);
 }
 
 void App::handle_input(double dt_s) {
@@ -203,7 +214,10 @@ void App::draw_panel() {
   if (ImGui::InputInt("sample limit", &settings_.sample_limit, 16, 256)) settings_.sample_limit = std::max(0, settings_.sample_limit);
   int tonemap = int(settings_.tonemap);
   if (ImGui::Combo("tone map", &tonemap, kToneMapNames, kNumToneMaps)) settings_.tonemap = ToneMap(tonemap);
-  ImGui::SliderFloat("exposure", &settings_.exposure, 0.01f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+  if (ImGui::SliderFloat("exposure", &settings_.exposure, 0.001f, 16.0f, "%.3f", ImGuiSliderFlags_Logarithmic))
+    auto_exposure_ = false;
+  ImGui::SameLine();
+  if (ImGui::Checkbox("auto", &auto_exposure_) && auto_exposure_) next_exposure_at_ = 0;
 
   ImGui::Separator();
   const double end_ms = done_ms_ >= 0 ? done_ms_ : last_frame_ms_;

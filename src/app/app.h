@@ -71,6 +71,12 @@ class App {
   double samples_per_second_ = 0.0;
   double restart_ms_ = 0.0, done_ms_ = -1.0;
 
+  // Auto exposure (display only): the log-average luminance of the estimate is mapped to
+  // middle grey, re-measured at 4, 8, 16, ... samples (up to every 512) after a restart.
+  void update_auto_exposure();
+  bool auto_exposure_ = true;
+  int next_exposure_at_ = 4;
+
   // Mouse look: whether the current left-drag started on the canvas (not on the panel).
   bool dragging_ = false;
 
