@@ -80,6 +80,19 @@ TEST_CASE("every shape and material kind compiles and links on this GL", "[gpu]"
   CHECK_NOTHROW(Program(fullscreen_vertex(), src));
 }
 
+TEST_CASE("a GLSL compile error on the driver names the snippet file and its line", "[gpu]") {
+  test_gl();
+  try {
+    Program(fullscreen_vertex(),
+            resolve_includes("#version 300 es\nprecision highp float;\n#include \"fresnel.glsl\"\nout vec4 o;\n"
+                             "void main() { o = vec4(no_such_thing); }\n", "broken.glsl"));
+    FAIL("compiled");
+  } catch (const GlError& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("broken.glsl:5:") != std::string::npos);
+  }
+}
+
 TEST_CASE("editing values re-uploads data and never recompiles", "[gpu]") {
   test_gl();
   Scene s = load_scene_file(repo_path("scenes/reference/scene2.xml"));

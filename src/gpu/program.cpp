@@ -6,6 +6,16 @@
 namespace pt {
 namespace {
 
+// The info log of a shader or program object (the two GL families share a shape).
+template <typename GetIv, typename GetLog>
+std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
+  GLint len = 0;
+  get_iv(object, GL_INFO_LOG_LENGTH, &len);
+  std::vector<char> log(size_t(len > 1 ? len : 1), '\0');
+  get_log(object, GLsizei(log.size()), nullptr, log.data());
+  return log.data();
+}
+
 GLuint compile(GLenum type, const ShaderSource& src) {
   GLuint s = glCreateShader(type);
   const char* text = src.text.c_str();
@@ -14,12 +24,9 @@ GLuint compile(GLenum type, const ShaderSource& src) {
   GLint ok = 0;
   glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    GLint len = 0;
-    glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
-    std::vector<char> log(size_t(len > 1 ? len : 1), '\0');
-    glGetShaderInfoLog(s, GLsizei(log.size()), nullptr, log.data());
+    const std::string log = info_log(s, glGetShaderiv, glGetShaderInfoLog);
     glDeleteShader(s);
-    throw GlError("GLSL compile error:\n" + src.map_log(log.data()));
+    throw GlError("GLSL compile error:\n" + src.map_log(log));
   }
   return s;
 }
@@ -45,13 +52,10 @@ Program::Program(const ShaderSource& vs, const ShaderSource& fs) {
   GLint ok = 0;
   glGetProgramiv(id_, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint len = 0;
-    glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &len);
-    std::vector<char> log(size_t(len > 1 ? len : 1), '\0');
-    glGetProgramInfoLog(id_, GLsizei(log.size()), nullptr, log.data());
+    const std::string log = info_log(id_, glGetProgramiv, glGetProgramInfoLog);
     glDeleteProgram(id_);
     id_ = 0;
-    throw GlError("GLSL link error:\n" + fs.map_log(log.data()));
+    throw GlError("GLSL link error:\n" + fs.map_log(log));
   }
   compile_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }

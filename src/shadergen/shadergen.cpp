@@ -102,7 +102,8 @@ ShaderSource resolve_includes(const std::string& root_text, const std::string& r
 }
 
 std::string ShaderSource::map_log(const std::string& log) const {
-  // Drivers print "0:12:" (Mesa, ANGLE) or "0(12) :" (NVIDIA): source 0 is files[0].
+  // Drivers print "0:12:" (ANGLE), "0:12(7):" (Mesa, with a column) or "0(12) :" (NVIDIA):
+  // source 0 is files[0].
   auto digits = [&](size_t i) {
     size_t j = i;
     while (j < log.size() && std::isdigit(static_cast<unsigned char>(log[j]))) ++j;
@@ -117,6 +118,10 @@ std::string ShaderSource::map_log(const std::string& log) const {
       const size_t b_end = digits(a_end + 1);
       size_t after = b_end;
       if (log[a_end] == '(' && after < log.size() && log[after] == ')') ++after;
+      if (log[a_end] == ':' && after < log.size() && log[after] == '(') {  // Mesa's column
+        after = digits(after + 1);
+        if (after < log.size() && log[after] == ')') ++after;
+      }
       while (log[a_end] == '(' && after < log.size() && log[after] == ' ') ++after;
       const size_t src = std::stoul(log.substr(i, a_end - i));
       if (b_end > a_end + 1 && after < log.size() && log[after] == ':' && src < files.size()) {

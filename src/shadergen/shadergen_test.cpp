@@ -82,4 +82,5 @@ TEST_CASE("compiler logs name the snippet file and its own line", "[shadergen]")
   s.files = {"<generated>", "materials/metal.glsl"};
   CHECK(s.map_log("ERROR: 1:42: 'foo' : undeclared identifier") == "ERROR: materials/metal.glsl:42: 'foo' : undeclared identifier");
   CHECK(s.map_log("0(7) : error C1008: undefined variable") == "<generated>:7: error C1008: undefined variable");
+  CHECK(s.map_log("1:5(20): error: `x' undeclared") == "materials/metal.glsl:5: error: `x' undeclared");
 }
