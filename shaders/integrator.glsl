@@ -36,7 +36,13 @@ vec3 trace_path(Ray r) {
   for (int bounce = 0;; ++bounce) {
     Hit h = scene_intersect(r);
     if (h.id < 0) {
+#ifdef HAS_ENV_MAP
+      float w = 1.0;
+      if (u_nee != 0 && !prev_delta) w = power_heuristic(prev_pdf, env_light_pdf(r.d));
+      L += beta * env_radiance(r.d) * w;
+#else
       L += beta * u_env_color;
+#endif
       break;
     }
     ShapeRec s = load_shape(h.id);
@@ -59,7 +65,7 @@ vec3 trace_path(Ray r) {
     vec3 wo = to_local(fr, -r.d);
     vec4 u_light = next4();  // xyz: light choice and point; w: Russian roulette
     vec4 u_bsdf = next4();
-    if (u_nee != 0 && u_num_lights > 0 && !material_is_delta(m)) {
+    if (u_nee != 0 && have_lights() && !material_is_delta(m)) {
       LightSample ls;
       if (light_sample(p, u_light.xyz, ls)) {
         float pdf_b;

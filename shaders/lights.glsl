@@ -7,19 +7,46 @@ uniform int u_num_lights;
 
 struct LightSample { vec3 wi; float pdf; vec3 radiance; int shape; };
 
+// With an environment map, half the light samples go to it (all of them when the scene
+// has no emitters); the densities below include that choice.
+float env_select_prob() {
+#ifdef HAS_ENV_MAP
+  return u_num_lights > 0 ? 0.5 : 1.0;
+#else
+  return 0.0;
+#endif
+}
+
+bool have_lights() { return u_num_lights > 0 || env_select_prob() > 0.0; }
+
 bool light_sample(vec3 p, vec3 u, out LightSample ls) {
+  float pe = env_select_prob();
+#ifdef HAS_ENV_MAP
+  if (u.z < pe) {
+    float pdf;
+    if (!env_sample(u.xy, ls.wi, pdf, ls.radiance)) return false;
+    ls.pdf = pdf * pe;
+    ls.shape = -1;  // visible when the shadow ray leaves the scene
+    return true;
+  }
+  u.z = (u.z - pe) / (1.0 - pe);
+#endif
   if (u_num_lights == 0) return false;
   int li = min(int(u.z * float(u_num_lights)), u_num_lights - 1);
   LightRec l = load_light(li);
   if (!light_sample_shape(load_shape(l.shape), p, u.xy, ls.wi, ls.pdf) || !(ls.pdf > 0.0)) return false;
-  ls.pdf /= float(u_num_lights);
+  ls.pdf *= (1.0 - pe) / float(u_num_lights);
   ls.radiance = l.radiance;
   ls.shape = l.shape;
   return true;
 }
 
-// Density with which light_sample would pick direction wi from p, reaching light `li`'s
+// Density with which light_sample would pick direction wi from p, reaching the emitting
 // shape s at distance t where its normal is n.
 float light_pdf(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
-  return light_pdf_shape(s, p, wi, t, n) / float(u_num_lights);
+  return light_pdf_shape(s, p, wi, t, n) * (1.0 - env_select_prob()) / float(u_num_lights);
 }
+
+#ifdef HAS_ENV_MAP
+float env_light_pdf(vec3 wi) { return env_pdf(wi) * env_select_prob(); }
+#endif

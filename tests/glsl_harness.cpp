@@ -12,6 +12,7 @@ Features all_features() {
   f.materials = (1u << kNumMaterialKinds) - 1;
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (kShapeKinds[i].samplable) f.lights |= 1u << i;
+  f.env_map = true;
   return f;
 }
 
@@ -23,6 +24,8 @@ GlslKernel::GlslKernel(const std::string& body, const Features& f) {
       std::to_string(kDataWidth) + " + px.x;\n  o_out = i < u_count ? kernel(texelFetch(u_input, px, 0), i) : vec4(0.0);\n}\n";
   program_ = Program(fullscreen_vertex(), resolve_includes(generate_prelude(f) + "#line 1\n" + body + main, "<kernel>"));
 }
+
+void GlslKernel::bind(const char* sampler, const Texture& t) { textures_.emplace_back(sampler, &t); }
 
 std::vector<glm::vec4> GlslKernel::run(const std::vector<glm::vec4>& inputs) {
   const int n = int(inputs.size());
@@ -38,6 +41,10 @@ std::vector<glm::vec4> GlslKernel::run(const std::vector<glm::vec4>& inputs) {
   program_.use();
   in.bind(0);
   program_.set("u_input", 0);
+  for (size_t k = 0; k < textures_.size(); ++k) {
+    textures_[k].second->bind(int(k) + 1);
+    program_.set(textures_[k].first.c_str(), int(k) + 1);
+  }
   program_.set("u_count", n);
   glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
   glViewport(0, 0, kDataWidth, rows);

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "gpu/program.h"
+#include "gpu/texture.h"
 #include "shadergen/shadergen.h"
 
 namespace pt {
@@ -24,9 +25,12 @@ class GlslKernel {
   std::vector<glm::vec4> run(int n) { return run(std::vector<glm::vec4>(size_t(n), glm::vec4(0.0f))); }
   // Set uniforms (u_dot_weight, ...) before run().
   Program& program() { return program_; }
+  // A texture bound to `sampler` on every run (units 1 and up; 0 holds the inputs).
+  void bind(const char* sampler, const Texture& t);
 
  private:
   Program program_;
+  std::vector<std::pair<std::string, const Texture*>> textures_;
 };
 
 }  // namespace pt

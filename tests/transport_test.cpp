@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <memory>
 #include <algorithm>
 #include <cstdio>
 
@@ -195,4 +196,54 @@ TEST_CASE("Fresnel closed forms", "[gpu][transport]") {
   const double ci = 0.6, eta = 1.5, st2 = (1 - ci * ci) / (eta * eta), ct = std::sqrt(1 - st2);
   const double rs = (ci - eta * ct) / (ci + eta * ct), rp = (eta * ci - ct) / (eta * ci + ct);
   CHECK(out[5].x == Approx(0.5 * (rs * rs + rp * rp)).epsilon(1e-5));
+}
+
+TEST_CASE("white plane under an HDR environment map: the exact irradiance integral", "[gpu][transport]") {
+  test_gl();
+  // For a piecewise-constant map the radiance of a Lambertian plane of albedo 1 facing +y
+  // is exactly (1/pi) sum over upper-hemisphere texels of L * (2 pi / w) *
+  // (sin^2 theta1 - sin^2 theta0) / 2, whatever the rotation. Light sampling of the map
+  // (importance by luminance * sin theta) and MIS with the BSDF must reproduce it.
+  auto map = std::make_shared<EnvImage>();
+  map->width = 24;
+  map->height = 12;
+  map->rgba.assign(size_t(map->width * map->height * 4), 0.0f);
+  uint32_t state = 12345u;
+  auto next = [&]() { return float((state = state * 1664525u + 1013904223u) >> 8) / 16777216.0f; };
+  double exact = 0.0;
+  const double pi = 3.14159265358979323846;
+  for (int y = 0; y < map->height; ++y)
+    for (int x = 0; x < map->width; ++x) {
+      float* p = &map->rgba[size_t(y * map->width + x) * 4];
+      const float hot = next() < 0.05f ? 60.0f : 0.0f;
+      p[0] = next() + hot;
+      p[1] = 0.5f * next() + hot;
+      p[2] = 0.2f * next();
+      p[3] = 1.0f;
+      if (2 * y < map->height) {
+        const double t0 = pi * y / map->height, t1 = pi * (y + 1) / map->height;
+        const double lum = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+        exact += lum * (2 * pi / map->width) * 0.5 * (std::sin(t1) * std::sin(t1) - std::sin(t0) * std::sin(t0)) / pi;
+      }
+    }
+  Scene s;
+  s.camera.position = glm::vec3(0.0f, 3.0f, 0.0f);
+  s.camera.pitch = -80.0f;
+  s.environment.map = map;
+  s.environment.rotation = 123.0f;
+  s.environment.intensity = 1.7f;
+  Material white;
+  Shape plane;
+  plane.kind = ShapeKind::Plane;
+  plane.a = glm::vec3(0, 1, 0);
+  plane.material = add_material(s, white);
+  s.shapes.push_back(plane);
+  for (bool nee : {true, false}) {
+    RenderSettings st;
+    st.max_bounces = 1;
+    st.nee = nee;
+    const RenderResult r = render_scene(s, 32, 32, nee ? 64 : 512, st);
+    check_close(nee ? "plane under an environment map, NEE+MIS" : "plane under an environment map, BSDF only",
+                region_mean(r, 0, 0, 32, 32), 1.7 * exact, &r);
+  }
 }

@@ -1,12 +1,13 @@
 #include "render/renderer.h"
 
 #include "render/camera.h"
+#include "render/environment.h"
 #include "render/packing.h"
 
 namespace pt {
 namespace {
 
-enum Unit { kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3, kStatsUnit = 4 };
+enum Unit { kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3, kStatsUnit = 4, kEnvUnit = 5, kEnvCdfUnit = 6 };
 
 Texture upload(const RecordBuffer& b) {
   const std::vector<float> t = b.texels();
@@ -58,6 +59,20 @@ void Renderer::set_scene(const Scene& scene) {
   num_lights_ = p.lights.count();
   dot_weight_ = scene.dot_weight;
   env_color_ = scene.environment.color;
+  const Environment& env = scene.environment;
+  if (env.map) {
+    // Re-upload only for a different image: rotation and intensity are uniforms.
+    if (env_source_ != env.map) {
+      const EnvDistribution d = build_env_distribution(*env.map);
+      env_tex_ = Texture(env.map->width, env.map->height, GL_RGBA32F, env.map->rgba.data());
+      env_cdf_tex_ = Texture(env.map->width + 1, env.map->height + 1, GL_RGBA32F, d.cdf_texels.data());
+      env_size_ = glm::ivec2(env.map->width, env.map->height);
+      env_integral_ = d.integral;
+      env_source_ = env.map;
+    }
+    env_rotation_ = glm::radians(env.rotation);
+    env_intensity_ = env.intensity;
+  }
   camera_ = scene.camera;
   restart();
 }
@@ -117,6 +132,16 @@ int Renderer::step() {
   p.set("u_cam_up", cb.up);
   p.set("u_size", glm::vec2(float(width_), float(height_)));
   p.set("u_env_color", env_color_);
+  if (env_tex_.id()) {
+    env_tex_.bind(kEnvUnit);
+    env_cdf_tex_.bind(kEnvCdfUnit);
+    p.set("u_env_map", int(kEnvUnit));
+    p.set("u_env_cdf", int(kEnvCdfUnit));
+    p.set("u_env_size", env_size_);
+    p.set("u_env_rotation", env_rotation_);
+    p.set("u_env_intensity", env_intensity_);
+    p.set("u_env_integral", env_integral_);
+  }
   accum_[cur_].bind(kAccumUnit);
   stats_[cur_].bind(kStatsUnit);
   shape_tex_.bind(kShapeUnit);

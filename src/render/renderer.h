@@ -77,6 +77,10 @@ class Renderer {
   std::unordered_map<uint64_t, std::unique_ptr<CachedProgram>> cache_;
   Program display_;
   Texture shape_tex_, material_tex_, light_tex_;
+  Texture env_tex_, env_cdf_tex_;  // when the scene has an environment map
+  glm::ivec2 env_size_{0};
+  float env_rotation_ = 0.0f, env_intensity_ = 1.0f, env_integral_ = 0.0f;
+  std::shared_ptr<const EnvImage> env_source_;  // the image the textures hold
   Texture accum_[2];
   Texture stats_[2];
   Framebuffer fbo_[2];

@@ -2,6 +2,7 @@
 // Units are the scene file's own. Radiance of emitters: see docs/scene-format.md
 // ("intensity" is radiance per unit colour, the same map for lights and Emit).
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -53,8 +54,18 @@ struct Camera {
   float fov_y = 45.0f;
 };
 
+// An equirectangular HDR image, rows top (theta = 0, +y) to bottom, RGBA float.
+struct EnvImage {
+  int width = 0, height = 0;
+  std::vector<float> rgba;
+};
+
 struct Environment {
-  glm::vec3 color{0.5f};  // constant radiance seen by rays that leave the scene
+  glm::vec3 color{0.5f};   // constant radiance seen by rays that leave the scene
+  std::string map_path;    // or an equirectangular HDR map (then `color` is unused)
+  std::shared_ptr<const EnvImage> map;
+  float rotation = 0.0f;   // degrees about +y (the seed's slider: 0..720)
+  float intensity = 1.0f;  // multiplies the map (the seed's "energy": 0..5)
 };
 
 struct Scene {

@@ -74,6 +74,12 @@ glm::vec2 XmlAttrs::vec2(const char* name) {
   return v;
 }
 
+std::string XmlAttrs::text(const char* name) {
+  const char* t = raw(name);
+  if (!t || !*t) fail(std::string("missing attribute '") + name + "'");
+  return t;
+}
+
 bool XmlAttrs::boolean(const char* name, bool fallback) {
   const char* t = raw(name);
   if (!t) return fallback;

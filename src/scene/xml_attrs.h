@@ -23,6 +23,7 @@ class XmlAttrs {
   glm::vec3 vec3(const char* name, glm::vec3 fallback);
   glm::vec2 vec2(const char* name);
   bool boolean(const char* name, bool fallback);
+  std::string text(const char* name);  // required, non-empty
   // Throws for attributes nobody asked for.
   void finish() const;
   [[noreturn]] void fail(const std::string& what) const;

@@ -4,12 +4,14 @@
 #include "scene/xml_loader.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
 
 #include <tinyxml2.h>
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/image.h"
 #include "scene/xml_attrs.h"
 
 namespace pt {
@@ -129,6 +131,27 @@ void parse_emit(Loader&, XmlAttrs& a, const XMLElement* e, Material& m) {
 struct Loader {
   std::string file;
   Scene scene;
+
+  // A path in a scene file is relative to the scene file's folder.
+  std::string resolve_path(const std::string& p) const {
+    return !p.empty() && p[0] == '/' ? p : directory_of(file) + "/" + p;
+  }
+
+  std::shared_ptr<const EnvImage> load_env_image(XmlAttrs& a, const std::string& path) {
+    auto img = std::make_shared<EnvImage>();
+    std::vector<float> rgba;
+    if (!read_hdr(path, &img->width, &img->height, &rgba)) a.fail("cannot read the environment map '" + path + "'");
+    if (img->width < 2 || img->height < 1 || img->width > 16384 || img->height > 8192)
+      a.fail("environment map '" + path + "' has an unusable size");
+    // read_hdr gives rows bottom to top; the map is kept top (theta = 0) to bottom.
+    const size_t row = size_t(img->width) * 4;
+    img->rgba.resize(rgba.size());
+    for (int y = 0; y < img->height; ++y)
+      std::copy_n(&rgba[size_t(img->height - 1 - y) * row], row, &img->rgba[size_t(y) * row]);
+    for (float& v : img->rgba)
+      if (!std::isfinite(v) || v < 0.0f) a.fail("environment map '" + path + "' has negative or non-finite values");
+    return img;
+  }
 
   [[noreturn]] void fail(const XMLElement* e, const std::string& what) {
     throw InputError(file, e ? e->GetLineNum() : 0, what);
@@ -260,8 +283,18 @@ struct Loader {
         if (have_env) fail(e, "a second <Environment>");
         have_env = true;
         XmlAttrs env(e, file);
-        scene.environment.color = env.vec3("color");
-        if (glm::any(glm::lessThan(scene.environment.color, glm::vec3(0.0f)))) env.fail("'color' must be >= 0");
+        Environment& en = scene.environment;
+        if (env.has("map") == env.has("color")) env.fail("give either 'color' or 'map'");
+        if (env.has("color")) {
+          en.color = env.vec3("color");
+          if (glm::any(glm::lessThan(en.color, glm::vec3(0.0f)))) env.fail("'color' must be >= 0");
+        } else {
+          en.map_path = resolve_path(env.text("map"));
+          en.map = load_env_image(env, en.map_path);
+          en.rotation = env.number("rotation", 0.0f);
+          en.intensity = env.number("intensity", 1.0f);
+          if (en.intensity < 0.0f || en.intensity > 1e6f) env.fail("'intensity' must be in [0, 1e6]");
+        }
         env.finish();
         if (e->FirstChildElement()) env.fail("takes no child elements");
       } else if (!std::strcmp(n, "Objects")) {

@@ -2,10 +2,12 @@
 // malformed input fails with a message naming file, line and problem.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <fstream>
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/image.h"
 #include "scene/xml_loader.h"
 #include "test_paths.h"
 
@@ -129,7 +131,11 @@ TEST_CASE("Environment sets the constant background radiance, strictly", "[loade
   CHECK(load_scene_text(h + "<Environment color=\"0 0.1 2\"/>" + obj + "</SceneLevel>", "x.xml").environment.color ==
         glm::vec3(0.0f, 0.1f, 2.0f));
   CHECK(error_of(h + "<Environment color=\"0 -1 0\"/>" + obj + "</SceneLevel>") == "bad.xml:4: <Environment>: 'color' must be >= 0");
-  CHECK(error_of(h + "<Environment/>" + obj + "</SceneLevel>") == "bad.xml:4: <Environment>: missing attribute 'color'");
+  CHECK(error_of(h + "<Environment/>" + obj + "</SceneLevel>") == "bad.xml:4: <Environment>: give either 'color' or 'map'");
+  CHECK(error_of(h + "<Environment color=\"1 1 1\" map=\"a.hdr\"/>" + obj + "</SceneLevel>") ==
+        "bad.xml:4: <Environment>: give either 'color' or 'map'");
+  CHECK(error_of(h + "<Environment map=\"no-such.hdr\"/>" + obj + "</SceneLevel>") ==
+        "bad.xml:4: <Environment>: cannot read the environment map './no-such.hdr'");
 }
 
 TEST_CASE("a missing scene file is an error naming the file", "[loader]") {
@@ -149,4 +155,26 @@ TEST_CASE("vectors accept commas and spaces, nothing else", "[loader]") {
         std::string::npos);
   CHECK(error_of(h + "<Objects><Sphere center=\"1;2;3\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>").find("needs 3") !=
         std::string::npos);
+}
+
+TEST_CASE("an environment map loads relative to the scene file, top row first", "[loader]") {
+  const std::string dir = std::string(PT_BINARY_DIR) + "/loader-test";
+  std::filesystem::create_directories(dir + "/maps");
+  // 4x2: the top row bright (theta near 0), the bottom row dark. write_hdr takes rows
+  // bottom to top, as GL does.
+  std::vector<float> rgba = {0.1f, 0.1f, 0.1f, 1, 0.2f, 0.2f, 0.2f, 1, 0.3f, 0.3f, 0.3f, 1, 0.4f, 0.4f, 0.4f, 1,
+                             5, 5, 5, 1, 6, 6, 6, 1, 7, 7, 7, 1, 8, 8, 8, 1};
+  REQUIRE(write_hdr(dir + "/maps/sky.hdr", 4, 2, rgba));
+  const std::string xml = std::string(kHead) +
+                          "<Environment map=\"maps/sky.hdr\" rotation=\"90\" intensity=\"2\"/>\n"
+                          "<Objects><Sphere center=\"0 0 0\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>";
+  std::ofstream(dir + "/scene.xml") << xml;
+  const Scene s = load_scene_file(dir + "/scene.xml");
+  REQUIRE(s.environment.map);
+  CHECK(s.environment.map->width == 4);
+  CHECK(s.environment.map->height == 2);
+  CHECK(s.environment.map->rgba[0] == Approx(5.0f).epsilon(0.01));  // top row first
+  CHECK(s.environment.map->rgba[4 * 4] == Approx(0.1f).epsilon(0.01));
+  CHECK(s.environment.rotation == 90.0f);
+  CHECK(s.environment.intensity == 2.0f);
 }

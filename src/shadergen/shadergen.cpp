@@ -19,6 +19,7 @@ const char* find_embedded_glsl(const char* name) {
 
 Features Features::of(const Scene& scene) {
   Features f;
+  f.env_map = scene.environment.map != nullptr;
   for (const Shape& s : scene.shapes) f.shapes |= 1u << int(s.kind);
   for (const Shape& s : scene.shapes) {
     const Material& m = scene.materials[size_t(s.material)];
@@ -145,6 +146,7 @@ std::string generate_prelude(const Features& f) {
     if (f.has_light(ShapeKind(i))) g += "#define HAS_LIGHT_" + upper(kShapeKinds[i].glsl) + " 1\n";
   for (int i = 0; i < kNumMaterialKinds; ++i)
     if (f.has(MaterialKind(i))) g += "#define HAS_MAT_" + upper(kMaterialKinds[i].glsl) + " 1\n";
+  if (f.env_map) g += "#define HAS_ENV_MAP 1\n";
   g += "#include \"common.glsl\"\n";
   g += glsl_record(shape_layout()) + glsl_record(material_layout()) + glsl_record(light_layout());
   g += glsl_sobol_table();
@@ -190,6 +192,7 @@ std::string generate_prelude(const Features& f) {
     lpdf += cond + "return pdf_light_" + k + "(s, p, wi, t, n);\n";
   }
   g += lsmp + "  pdf = 0.0;\n  return false;\n}\n" + lpdf + "  return 0.0;\n}\n";
+  if (f.env_map) g += "#include \"environment.glsl\"\n";
   g += "#include \"lights.glsl\"\n";
   return g;
 }
