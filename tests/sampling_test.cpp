@@ -23,7 +23,7 @@ namespace {
 
 constexpr int kSamples = 1000000;
 constexpr int kCosBins = 40, kPhiBins = 80, kSub = 5;
-constexpr int kChi2Tests = 21;  // every direction_chi2 call below
+constexpr int kChi2Tests = 25;  // every direction_chi2 call below
 constexpr double kPi = 3.14159265358979323846;
 
 struct DirectionCase {
@@ -124,8 +124,8 @@ std::string material(const char* kind, float roughness, float sampling) {
   std::snprintf(buf, sizeof buf,
                 "MaterialRec make_material() {\n  MaterialRec m;\n  m.kind = %s; m.roughness = %.6f; m.sampling = %.1f;\n"
                 "  m.tint = vec3(1.0); m.ior_n = 0.2; m.ior_k = 3.0; m.emission = vec3(0.0);\n"
-                "  m.eta_outer = 1.0; m.eta_inner = 1.5;\n  return m;\n}\n",
-                kind, double(roughness), double(sampling));
+                "  m.eta_outer = 1.0; m.eta_inner = 1.5; m.exponent = %.1f;\n  return m;\n}\n",
+                kind, double(roughness), double(sampling), double(sampling));
   return buf;
 }
 
@@ -167,6 +167,16 @@ TEST_CASE("chi-square: GGX metal, visible-normal and cosine sampling", "[gpu][sa
                              " cos_o=" + std::to_string(c.cos_o);
     CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
   }
+}
+
+TEST_CASE("chi-square: Phong specular lobe", "[gpu][sampling]") {
+  // material(kind, roughness, sampling) passes `sampling` as the exponent too.
+  for (float n : {8.0f, 60.0f})
+    for (double c : {0.9, 0.2}) {
+      DirectionCase dc{material("MAT_PHONG_SPECULAR", 0, n) + incident(c) + kBsdfPdfHelper, kBsdfSample, kBsdfDensity};
+      const std::string name = "phong n=" + std::to_string(int(n)) + " cos_o=" + std::to_string(c);
+      CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+    }
 }
 
 TEST_CASE("chi-square: light sampling of spheres, boxes and triangles", "[gpu][sampling]") {

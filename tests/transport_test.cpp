@@ -50,7 +50,8 @@ TEST_CASE("white furnace: energy-conserving materials return the environment", "
     Material m;
     double expect;
   };
-  Material diffuse, half, glass, transmit, glass_tir;
+  Material diffuse, half, glass, transmit, glass_tir, mirror;
+  mirror.kind = MaterialKind::Reflect;
   half.tint = glm::vec3(0.5f);
   glass.kind = MaterialKind::SmoothDielectric;
   glass.inner_ior = 1.5f;
@@ -62,7 +63,7 @@ TEST_CASE("white furnace: energy-conserving materials return the environment", "
   for (const C& c : {C{"furnace: diffuse albedo 1 -> 1", diffuse, 1.0}, C{"furnace: diffuse albedo 0.5 -> 0.5", half, 0.5},
                      C{"furnace: smooth dielectric n=1.5 -> 1", glass, 1.0},
                      C{"furnace: smooth dielectric n=2.4 -> 1", glass_tir, 1.0},
-                     C{"furnace: transmit n=1.33 -> 1", transmit, 1.0}}) {
+                     C{"furnace: transmit n=1.33 -> 1", transmit, 1.0}, C{"furnace: mirror (Reflect) -> 1", mirror, 1.0}}) {
     // The sphere (radius 1 at distance 4) covers the central 16x16 pixels of 64x64.
     const RenderResult r = render_scene(furnace(c.m), 64, 64, 64, st);
     check_close(c.name, region_mean(r, 24, 24, 40, 40), c.expect, &r);

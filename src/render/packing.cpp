@@ -34,6 +34,7 @@ PackedScene pack_scene(const Scene& scene) {
     p.materials.set(i, f::emission, m.emission);
     p.materials.set(i, f::eta_outer, m.outer_ior);
     p.materials.set(i, f::eta_inner, m.inner_ior);
+    p.materials.set(i, f::exponent, m.exponent);
   }
   return p;
 }

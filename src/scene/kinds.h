@@ -25,7 +25,9 @@
   X(Metal, metal, "Metal")                            \
   X(Transmit, transmit, "Transmit")                   \
   X(SmoothDielectric, smooth_dielectric, "SmoothDielectric") \
-  X(Emit, emit, "Emit")
+  X(Emit, emit, "Emit")                               \
+  X(Reflect, reflect, "Reflect")                      \
+  X(PhongSpecular, phong_specular, "PhongSpecular")
 
 namespace pt {
 

@@ -21,6 +21,7 @@ struct Material {
   float montecarlo = 1.0f;    // Metal: 1 samples the microfacet distribution, 0 the cosine lobe
   float outer_ior = 1.0f;     // Transmit / SmoothDielectric: medium outside the surface
   float inner_ior = 1.5f;     // medium inside
+  float exponent = 0.0f;      // PhongSpecular: the lobe's exponent n
   int line = 0;               // scene-file line, for messages
 };
 

@@ -68,6 +68,12 @@ void parse_metal(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
 void parse_transmit(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
 void parse_smooth_dielectric(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
 void parse_emit(Loader&, XmlAttrs& a, const XMLElement* e, Material& m);
+void parse_reflect(Loader&, XmlAttrs& a, const XMLElement*, Material& m) { m.tint *= a.vec3("color", glm::vec3(1.0f)); }
+void parse_phong_specular(Loader&, XmlAttrs& a, const XMLElement*, Material& m) {
+  m.exponent = a.number("n");
+  if (!(m.exponent >= 0.0f) || m.exponent > 1e5f) a.fail("'n' must be in [0, 100000]");
+  m.tint *= a.vec3("color", glm::vec3(1.0f));
+}
 
 struct MaterialParser {
   const char* xml;

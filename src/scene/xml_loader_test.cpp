@@ -178,3 +178,18 @@ TEST_CASE("an environment map loads relative to the scene file, top row first", 
   CHECK(s.environment.rotation == 90.0f);
   CHECK(s.environment.intensity == 2.0f);
 }
+
+TEST_CASE("Reflect and PhongSpecular", "[loader]") {
+  const std::string h = kHead;
+  const Scene s = load_scene_text(h +
+                                      "<Objects><Sphere center=\"0 0 0\" radius=\"1\"><Reflect/></Sphere>"
+                                      "<Sphere center=\"3 0 0\" radius=\"1\"><Attenuate color=\"0.5 0.5 0.5\"><PhongSpecular n=\"100\"/></Attenuate></Sphere>"
+                                      "</Objects></SceneLevel>",
+                                  "x.xml");
+  CHECK(s.materials[0].kind == MaterialKind::Reflect);
+  CHECK(s.materials[1].kind == MaterialKind::PhongSpecular);
+  CHECK(s.materials[1].exponent == 100.0f);
+  CHECK(s.materials[1].tint == glm::vec3(0.5f));
+  CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\"><PhongSpecular/></Sphere></Objects></SceneLevel>") ==
+        "bad.xml:5: <PhongSpecular>: missing attribute 'n'");
+}
