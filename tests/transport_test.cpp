@@ -31,10 +31,11 @@ void check_close(const char* what, Estimate e, double exact, const RenderResult*
   CHECK(std::abs(e.mean - exact) < kZ * e.se + 1e-6 * exact);
 }
 
-Scene furnace(const Material& m) {
+Scene furnace(const Material& m, const std::vector<Material>& children = {}) {
   Scene s;
   s.camera = camera_looking_down_z(glm::vec3(0.0f, 0.0f, 4.0f));
   s.environment.color = glm::vec3(1.0f);
+  for (const Material& c : children) add_material(s, c);  // indices 0, 1, ...
   add_sphere(s, glm::vec3(0.0f), 1.0f, add_material(s, m));
   return s;
 }
@@ -68,6 +69,31 @@ TEST_CASE("white furnace: energy-conserving materials return the environment", "
     const RenderResult r = render_scene(furnace(c.m), 64, 64, 64, st);
     check_close(c.name, region_mean(r, 24, 24, 40, 40), c.expect, &r);
   }
+}
+
+TEST_CASE("white furnace: a Fresnel composite of a mirror and a refraction returns 1", "[gpu][transport]") {
+  test_gl();
+  RenderSettings st;
+  st.max_bounces = 64;
+  Material mirror, refract, composite;
+  mirror.kind = MaterialKind::Reflect;
+  refract.kind = MaterialKind::Transmit;
+  refract.inner_ior = 1.5f;
+  composite.kind = MaterialKind::FresnelComposite;
+  composite.outer_ior = 1.0f;
+  composite.inner_ior = 1.5f;
+  composite.child_a = 0;
+  composite.child_b = 1;
+  const RenderResult r = render_scene(furnace(composite, {mirror, refract}), 64, 64, 64, st);
+  check_close("furnace: FresnelComposite(Reflect, Transmit) -> 1", region_mean(r, 24, 24, 40, 40), 1.0, &r);
+  // Against the equivalent smooth dielectric, pixel region by pixel region.
+  Material glass;
+  glass.kind = MaterialKind::SmoothDielectric;
+  glass.inner_ior = 1.5f;
+  const RenderResult g = render_scene(furnace(glass), 64, 64, 64, st);
+  const Estimate a = region_mean(r, 20, 20, 44, 44), b = region_mean(g, 20, 20, 44, 44);
+  INFO("composite " << a.mean << " vs dielectric " << b.mean);
+  CHECK(std::abs(a.mean - b.mean) < 4.0 * std::sqrt(a.se * a.se + b.se * b.se) + 1e-6);
 }
 
 TEST_CASE("closed room of emitting diffuse walls: Le * sum of rho^k up to the bounce limit", "[gpu][transport]") {

@@ -35,6 +35,8 @@ PackedScene pack_scene(const Scene& scene) {
     p.materials.set(i, f::eta_outer, m.outer_ior);
     p.materials.set(i, f::eta_inner, m.inner_ior);
     p.materials.set(i, f::exponent, m.exponent);
+    p.materials.set(i, f::child_a, m.child_a);
+    p.materials.set(i, f::child_b, m.child_b);
   }
   return p;
 }

@@ -27,7 +27,8 @@
   X(SmoothDielectric, smooth_dielectric, "SmoothDielectric") \
   X(Emit, emit, "Emit")                               \
   X(Reflect, reflect, "Reflect")                      \
-  X(PhongSpecular, phong_specular, "PhongSpecular")
+  X(PhongSpecular, phong_specular, "PhongSpecular")   \
+  X(FresnelComposite, fresnel_composite, "FresnelComposite")
 
 namespace pt {
 

@@ -22,6 +22,7 @@ struct Material {
   float outer_ior = 1.0f;     // Transmit / SmoothDielectric: medium outside the surface
   float inner_ior = 1.5f;     // medium inside
   float exponent = 0.0f;      // PhongSpecular: the lobe's exponent n
+  int child_a = -1, child_b = -1;  // FresnelComposite: reflective and transmissive children
   int line = 0;               // scene-file line, for messages
 };
 

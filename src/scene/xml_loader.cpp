@@ -68,6 +68,7 @@ void parse_metal(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
 void parse_transmit(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
 void parse_smooth_dielectric(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
 void parse_emit(Loader&, XmlAttrs& a, const XMLElement* e, Material& m);
+void parse_fresnel_composite(Loader& l, XmlAttrs& a, const XMLElement* e, Material& m);
 void parse_reflect(Loader&, XmlAttrs& a, const XMLElement*, Material& m) { m.tint *= a.vec3("color", glm::vec3(1.0f)); }
 void parse_phong_specular(Loader&, XmlAttrs& a, const XMLElement*, Material& m) {
   m.exponent = a.number("n");
@@ -82,7 +83,8 @@ struct MaterialParser {
   bool has_children;  // whether the element wraps further elements
 };
 constexpr MaterialParser kMaterialParsers[] = {
-#define PT_X(e, g, x) {x, MaterialKind::e, &parse_##g, MaterialKind::e == MaterialKind::Emit},
+#define PT_X(e, g, x) \
+  {x, MaterialKind::e, &parse_##g, MaterialKind::e == MaterialKind::Emit || MaterialKind::e == MaterialKind::FresnelComposite},
     PT_MATERIAL_KINDS(PT_X)
 #undef PT_X
 };
@@ -316,6 +318,20 @@ struct Loader {
     if (scene.shapes.empty()) fail(r, "the scene has no objects and no lights");
   }
 };
+
+// <FresnelComposite na="1" nb="1.5"> reflective material, transmissive material
+// </FresnelComposite>: the first child is taken with the dielectric Fresnel reflectance
+// of the na|nb interface, the second otherwise.
+void parse_fresnel_composite(Loader& l, XmlAttrs& a, const XMLElement* e, Material& m) {
+  m.outer_ior = positive_ior(a, "na", 1.0f);
+  m.inner_ior = positive_ior(a, "nb", 1.5f);
+  const XMLElement* first = e->FirstChildElement();
+  const XMLElement* second = first ? first->NextSiblingElement() : nullptr;
+  if (!first || !second || second->NextSiblingElement())
+    a.fail("must contain exactly two materials: a reflective one, then a transmissive one");
+  m.child_a = l.material(first, m.tint);  // an Attenuate around the composite tints both
+  m.child_b = l.material(second, m.tint);
+}
 
 }  // namespace
 

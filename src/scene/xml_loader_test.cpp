@@ -193,3 +193,22 @@ TEST_CASE("Reflect and PhongSpecular", "[loader]") {
   CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\"><PhongSpecular/></Sphere></Objects></SceneLevel>") ==
         "bad.xml:5: <PhongSpecular>: missing attribute 'n'");
 }
+
+TEST_CASE("FresnelComposite takes exactly two child materials", "[loader]") {
+  const std::string h = kHead;
+  const Scene s = load_scene_text(h +
+                                      "<Objects><Sphere center=\"0 0 0\" radius=\"1\">"
+                                      "<Attenuate color=\"1 0.5 0.5\"><FresnelComposite na=\"1\" nb=\"1.85\">"
+                                      "<Reflect/><Attenuate color=\"1 0 0\"><Diffuse/></Attenuate>"
+                                      "</FresnelComposite></Attenuate></Sphere></Objects></SceneLevel>",
+                                  "x.xml");
+  const Material& c = s.materials[size_t(s.shapes[0].material)];
+  REQUIRE(c.kind == MaterialKind::FresnelComposite);
+  CHECK(c.inner_ior == Approx(1.85f));
+  CHECK(s.materials[size_t(c.child_a)].kind == MaterialKind::Reflect);
+  CHECK(s.materials[size_t(c.child_a)].tint == glm::vec3(1.0f, 0.5f, 0.5f));  // the outer Attenuate reaches the children
+  CHECK(s.materials[size_t(c.child_b)].kind == MaterialKind::Diffuse);
+  CHECK(s.materials[size_t(c.child_b)].tint == glm::vec3(1.0f, 0.0f, 0.0f));
+  CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\"><FresnelComposite><Reflect/></FresnelComposite></Sphere></Objects></SceneLevel>") ==
+        "bad.xml:5: <FresnelComposite>: must contain exactly two materials: a reflective one, then a transmissive one");
+}

@@ -21,11 +21,10 @@ Features Features::of(const Scene& scene) {
   Features f;
   f.env_map = scene.environment.map != nullptr;
   for (const Shape& s : scene.shapes) f.shapes |= 1u << int(s.kind);
-  for (const Shape& s : scene.shapes) {
-    const Material& m = scene.materials[size_t(s.material)];
-    f.materials |= 1u << int(m.kind);
+  // Every material in the list is used (by a shape or as a composite's child).
+  for (const Material& m : scene.materials) f.materials |= 1u << int(m.kind);
+  for (const Shape& s : scene.shapes)
     if (is_sampled_light(scene, s)) f.lights |= 1u << int(s.kind);
-  }
   return f;
 }
 
