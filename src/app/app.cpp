@@ -27,6 +27,11 @@ constexpr double kSlowFrameMs = 28.0;
 constexpr double kTargetFrameMs = 22.0;
 constexpr double kCpuBudgetMs = 12.0;
 constexpr int kMaxPassesPerFrame = 64;
+// A draw is a band of rows of a sweep (Renderer::step): when even one draw per frame is
+// slow the band halves, down to kMinBandRows; when frames are fast it grows back to the
+// whole image before more draws per frame are added.
+constexpr int kFirstBandRows = 32;
+constexpr int kMinBandRows = 4;
 constexpr double kRateWindowMs = 3000.0;
 
 constexpr float kLookDegPerPixel = 0.2f;
@@ -65,6 +70,7 @@ std::string json_number(double v) {
 
 App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make_unique<Renderer>()) {
   settings_.sample_limit = options_.sample_limit;
+  settings_.band_rows = kFirstBandRows;  // the first frame of a heavy scene stays short
   renderer_->set_settings(settings_);
   scan_scenes();
   if (!load_scene(options_.scene)) {
@@ -239,23 +245,30 @@ void App::draw_panel() {
 void App::render_passes(double now_ms, double dt_ms) {
   // The interval since the last frame measures the work queued then (and the hidden time
   // of a background tab, after which the count simply grows back).
-  if (dt_ms > kSlowFrameMs)
-    passes_per_frame_ = std::max(1, int(std::min(0.9, kTargetFrameMs / dt_ms) * passes_per_frame_));
+  const int image_rows = renderer_->height();
+  const int band = settings_.band_rows > 0 ? std::min(settings_.band_rows, image_rows) : image_rows;
+  if (dt_ms > kSlowFrameMs) {
+    if (passes_per_frame_ > 1) {
+      passes_per_frame_ = std::max(1, int(std::min(0.9, kTargetFrameMs / dt_ms) * passes_per_frame_));
+    } else if (band > kMinBandRows) {
+      settings_.band_rows = std::max(kMinBandRows, int(band * std::min(0.5, kTargetFrameMs / dt_ms)));
+    }
+  }
 
   if (renderer_->samples() == 0) restart_ms_ = now_ms;
   const auto t0 = std::chrono::steady_clock::now();
   int done = 0;
   while (done < passes_per_frame_ && !renderer_->converged()) {
-    const int added = renderer_->step();
-    if (added == 0) break;
-    total_samples_ += added;
+    total_samples_ += renderer_->step();  // samples count when a sweep completes
     ++done;
     if (ms_since(t0) > kCpuBudgetMs) break;
   }
   // Grow only when this frame used all its passes, else an idle (converged) image would
   // ratchet the count up and the next restart would start with one very long frame.
-  if (dt_ms > 0 && dt_ms < kFastFrameMs && done == passes_per_frame_)
-    passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
+  if (dt_ms > 0 && dt_ms < kFastFrameMs && done == passes_per_frame_) {
+    if (band < image_rows) settings_.band_rows = band * 2 >= image_rows ? 0 : band * 2;
+    else passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
+  }
 
   if (!renderer_->converged()) done_ms_ = -1.0;  // a raised limit resumes the clock
   else if (done_ms_ < 0) done_ms_ = now_ms;
@@ -321,6 +334,7 @@ std::string App::stats_json() const {
   j += ",\"sampleLimit\":" + std::to_string(settings_.sample_limit);
   j += ",\"samplesPerSecond\":" + json_number(samples_per_second_);
   j += ",\"passesPerFrame\":" + std::to_string(passes_per_frame_);
+  j += ",\"bandRows\":" + std::to_string(settings_.band_rows);
   j += ",\"width\":" + std::to_string(renderer_->width());
   j += ",\"height\":" + std::to_string(renderer_->height());
   j += std::string(",\"accumFormat\":") + (renderer_->accum_format() == GL_RGBA32F ? "\"rgba32f\"" : "\"rgba16f\"");

@@ -15,6 +15,7 @@
 #include "core/image.h"
 #include "core/metrics.h"
 #include "core/svg_plot.h"
+#include "render/pacing.h"
 #include "gpu/gl.h"
 #include "platform/egl.h"
 #include "scene/xml_loader.h"
@@ -52,23 +53,30 @@ int run_bench(const Options& o) {
     double rays;
   };
   std::vector<Row> rows;
-  int draw_spp = o.per_pass > 0 ? o.per_pass : 1, next = 1;
+  RenderSettings pace;  // the adaptive draw size; checkpoints cap the samples per sweep
+  pace.spp_per_pass = o.per_pass > 0 ? o.per_pass : 1;
+  DrawPacer pacer(40.0);
+  int next = 1;
   double secs = 0;
   glFinish();
   while (secs < duration) {
-    settings.spp_per_pass = std::min(draw_spp, next - r.samples());
-    r.set_settings(settings);
+    if (!r.mid_sweep()) {
+      settings.spp_per_pass = std::min(pace.spp_per_pass, next - r.samples());
+      settings.band_rows = pace.band_rows;
+      r.set_settings(settings);
+    }
     const auto t0 = std::chrono::steady_clock::now();
+    const int band = settings.band_rows > 0 ? settings.band_rows : o.height;
+    const int spp_now = settings.spp_per_pass;
     r.step();
     glFinish();
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     secs += dt;
     if (o.per_pass == 0) {
-      RenderSettings s;
-      s.spp_per_pass = draw_spp;
-      adapt_pass_size(dt * 1000.0, s);
-      draw_spp = s.spp_per_pass;
+      pacer.record(dt * 1000.0, band, spp_now);
+      pacer.apply(o.height, pace);
     }
+    if (r.mid_sweep()) continue;
     if (r.samples() == next || secs >= duration) {
       rows.push_back({r.samples(), secs, image_error(r.read_radiance(), ref), r.counters().rays});
       if (r.samples() == next) next *= 2;

@@ -6,6 +6,7 @@
 
 #include "cli/options.h"
 #include "core/image.h"
+#include "render/pacing.h"
 #include "gpu/gl.h"
 #include "platform/egl.h"
 #include "scene/xml_loader.h"
@@ -42,14 +43,18 @@ int run_render(const Options& o) {
               scene.materials.size(), scene.lights.size());
   std::printf("shader: %zu bytes, compiled and linked in %.1f ms\n", r.integrator_source().text.size(), r.compile_ms());
 
+  DrawPacer pacer(40.0);
   glFinish();
   const auto t0 = std::chrono::steady_clock::now();
   while (!r.converged() && (o.seconds <= 0 || seconds_since(t0) < o.seconds)) {
     const auto tp = std::chrono::steady_clock::now();
+    const int rows = settings.band_rows > 0 ? settings.band_rows : o.height;
+    const int spp = settings.spp_per_pass;
     r.step();
     glFinish();
     if (o.per_pass == 0) {
-      adapt_pass_size(seconds_since(tp) * 1000.0, settings);
+      pacer.record(seconds_since(tp) * 1000.0, rows, spp);
+      pacer.apply(o.height, settings);
       r.set_settings(settings);
     }
   }

@@ -103,9 +103,4 @@ Options parse_options(int argc, char** argv, bool bench) {
   return o;
 }
 
-void adapt_pass_size(double draw_ms, RenderSettings& s) {
-  if (draw_ms < 20.0 && s.spp_per_pass < 256) s.spp_per_pass *= 2;
-  if (draw_ms > 80.0 && s.spp_per_pass > 1) s.spp_per_pass /= 2;
-}
-
 }  // namespace pt::cli

@@ -26,10 +26,6 @@ extern const char* const kUsage;
 [[noreturn]] void usage_error(const std::string& msg);
 Options parse_options(int argc, char** argv, bool bench);
 
-// Keeps one draw near 40 ms: long enough to amortise per-draw cost, short enough that
-// no watchdog fires. Adjusts settings.spp_per_pass from the last draw's time.
-void adapt_pass_size(double draw_ms, RenderSettings& settings);
-
 int run_render(const Options& o);
 int run_bench(const Options& o);
 int run_plot(int argc, char** argv);

@@ -1,5 +1,7 @@
 #include "render/renderer.h"
 
+#include <algorithm>
+
 #include "render/camera.h"
 #include "render/environment.h"
 #include "render/packing.h"
@@ -88,6 +90,7 @@ void Renderer::set_settings(const RenderSettings& s) {
   a.exposure = b.exposure;
   a.sample_limit = b.sample_limit;
   a.spp_per_pass = b.spp_per_pass;
+  a.band_rows = b.band_rows;
   if (!(a == b)) restart();
   settings_ = s;
 }
@@ -107,8 +110,24 @@ void Renderer::resize(int width, int height) {
 
 int Renderer::step() {
   if (!integrator_ || converged()) return 0;
-  int spp = settings_.spp_per_pass < 1 ? 1 : settings_.spp_per_pass;
-  if (settings_.sample_limit > 0 && samples_ + spp > settings_.sample_limit) spp = settings_.sample_limit - samples_;
+  if (next_row_ == 0) {  // a sweep starts: its sample count is fixed until it ends
+    sweep_spp_ = settings_.spp_per_pass < 1 ? 1 : settings_.spp_per_pass;
+    if (settings_.sample_limit > 0 && samples_ + sweep_spp_ > settings_.sample_limit)
+      sweep_spp_ = settings_.sample_limit - samples_;
+  }
+  const int spp = sweep_spp_;
+  const int rows = settings_.band_rows > 0 ? std::min(settings_.band_rows, height_) : height_;
+  const int y0 = next_row_, y1 = std::min(height_, y0 + rows);
+  const bool whole = y0 == 0 && y1 == height_;
+  if (needs_clear_) {  // rows not yet swept show black, not another scene's image
+    const float zero[4] = {0, 0, 0, 0};
+    for (Framebuffer& f : fbo_) {
+      glBindFramebuffer(GL_FRAMEBUFFER, f.id());
+      glClearBufferfv(GL_COLOR, 0, zero);
+      glClearBufferfv(GL_COLOR, 1, zero);
+    }
+    needs_clear_ = false;
+  }
   Program& p = *integrator_;
   p.use();
   const CameraBasis cb = camera_basis(camera_, float(width_) / float(height_));
@@ -148,14 +167,39 @@ int Renderer::step() {
   material_tex_.bind(kMaterialUnit);
   light_tex_.bind(kLightUnit);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_[1 - cur_].id());
-  glViewport(0, 0, width_, height_);
+  glViewport(0, 0, width_, height_);  // full size: gl_FragCoord stays in image pixels
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
-  glDisable(GL_SCISSOR_TEST);
+  if (whole) {
+    glDisable(GL_SCISSOR_TEST);
+  } else {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, y0, width_, y1 - y0);
+  }
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (whole) {
+    cur_ = 1 - cur_;
+  } else {
+    // Copy the band back into the texture it read: the pair agrees again on these rows,
+    // so later bands and sweeps read consistent data without a swap.
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_[1 - cur_].id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_[cur_].id());
+    for (int a = 0; a < 2; ++a) {
+      const GLenum bufs[2] = {a == 0 ? GLenum(GL_COLOR_ATTACHMENT0) : GLenum(GL_NONE),
+                              a == 1 ? GLenum(GL_COLOR_ATTACHMENT1) : GLenum(GL_NONE)};
+      glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + a));
+      glDrawBuffers(2, bufs);
+      glBlitFramebuffer(0, y0, width_, y1, 0, y0, width_, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, both);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  cur_ = 1 - cur_;
+  next_row_ = y1 == height_ ? 0 : y1;
+  if (next_row_ != 0) return 0;
   samples_ += spp;
   return spp;
 }

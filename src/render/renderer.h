@@ -17,7 +17,8 @@ namespace pt {
 
 struct RenderSettings {
   int max_bounces = 8;   // scattering events per path (seed: 8, range 1..16)
-  int spp_per_pass = 1;  // samples per pixel in one draw
+  int spp_per_pass = 1;  // samples per pixel in one draw (fixed for a whole sweep)
+  int band_rows = 0;     // rows per draw: a sweep of the image is several draws; 0 = all
   int sample_limit = 0;  // stop after this many samples per pixel; 0 = never
   bool nee = true;       // next-event estimation with MIS (off: BSDF sampling only)
   int sampler = 3;       // 4D blocks of a path drawn from Owen-scrambled Sobol (0: all independent)
@@ -38,10 +39,19 @@ class Renderer {
   void set_camera(const Camera& camera);
   void set_settings(const RenderSettings& s);
   void resize(int width, int height);
-  void restart() { samples_ = 0; }
+  void restart() {
+    samples_ = 0;
+    next_row_ = 0;
+    needs_clear_ = true;
+  }
 
-  // Renders one pass (unless the sample limit is reached). Returns samples added.
+  // One draw: the next band of rows of the current sweep (the whole image when
+  // band_rows is 0), unless the sample limit is reached. A sweep adds spp_per_pass
+  // samples to every pixel; returns the samples added when this draw completed a sweep,
+  // else 0. Bands keep each draw short (no watchdog, a responsive page); the estimate is
+  // the same.
   int step();
+  bool mid_sweep() const { return next_row_ != 0; }
   // Tone-mapped image into the bound draw framebuffer at viewport (x, y, w, h) = size().
   void display(int x, int y) const;
 
@@ -88,6 +98,9 @@ class Renderer {
   GLuint vao_ = 0;
   int cur_ = 0;
   int samples_ = 0;
+  int next_row_ = 0;      // first row of the next band; 0 = a new sweep starts
+  int sweep_spp_ = 1;     // samples per pixel of the sweep in progress
+  bool needs_clear_ = true;
   int width_ = 0, height_ = 0;
   int num_shapes_ = 0, num_lights_ = 0;
   bool dot_weight_ = true;
