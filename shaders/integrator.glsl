@@ -64,7 +64,10 @@ vec3 trace_path(Ray r) {
     Frame fr = frame_from(n);
     vec3 wo = to_local(fr, -r.d);
     vec4 u_light = next4();  // xyz: light choice and point; w: Russian roulette
-    vec4 u_bsdf = next4();
+    vec4 u_bsdf = next4();   // xyz: BSDF sample; w: choice of a composite's child
+#ifdef HAS_MAT_FRESNEL_COMPOSITE
+    m = resolve_fresnel_composite(m, wo.z, entering, u_bsdf.w);
+#endif
     if (u_nee != 0 && have_lights() && !material_is_delta(m)) {
       LightSample ls;
       if (light_sample(p, u_light.xyz, ls)) {
