@@ -11,7 +11,8 @@ struct Ray { vec3 o; vec3 d; };
 // bounce (a ray reflected inside a glass sphere otherwise drifts off its surface).
 struct Hit { float t; int id; vec3 n; vec3 p; };
 
-int g_rays;  // rays cast by this fragment (counted in scene_intersect)
+int g_rays;    // rays cast by this fragment (counted in scene_intersect)
+float g_time;  // the camera sample's time in the shutter interval (motion blur)
 
 float max3(vec3 v) { return max(max(v.x, v.y), v.z); }
 float max_abs(vec3 v) { return max3(abs(v)); }

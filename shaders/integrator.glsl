@@ -14,6 +14,9 @@ uniform vec3 u_cam_right;    // scaled by tan(fov/2) * aspect
 uniform vec3 u_cam_up;       // scaled by tan(fov/2)
 uniform vec3 u_cam_fwd;
 uniform vec2 u_size;
+uniform float u_lens_radius;     // thin lens: 0 = pinhole
+uniform float u_focal_distance;  // along u_cam_fwd
+uniform float u_shutter;         // camera samples are spread over [0, u_shutter]
 uniform vec3 u_env_color;
 
 layout(location = 0) out vec4 o_accum;
@@ -104,10 +107,21 @@ void main() {
   g_rays = 0;
   for (int s = 0; s < u_spp; ++s) {
     sampler_init(uvec2(px), uint(u_sample_base + s));
-    vec4 u_cam = next4();
+    vec4 u_cam = next4();  // xy: position in the pixel (box filter); zw: lens
+    g_time = u_shutter * rand01();
     vec2 ndc = (vec2(px) + u_cam.xy) / u_size * 2.0 - 1.0;
     vec3 d = normalize(u_cam_fwd + ndc.x * u_cam_right + ndc.y * u_cam_up);
-    vec3 c = trace_path(Ray(u_cam_pos, d));
+    vec3 o = u_cam_pos;
+    if (u_lens_radius > 0.0) {
+      // Thin lens: every ray through the lens point meets the pinhole ray on the plane in
+      // focus, perpendicular to the view direction.
+      vec3 focus = o + d * (u_focal_distance / dot(d, u_cam_fwd));
+      float r = u_lens_radius * sqrt(u_cam.z);
+      float phi = TWO_PI * u_cam.w;
+      o += r * (cos(phi) * normalize(u_cam_right) + sin(phi) * normalize(u_cam_up));
+      d = normalize(focus - o);
+    }
+    vec3 c = trace_path(Ray(o, d));
     if (non_finite(c)) {
       bad += 1.0;
       c = vec3(0.0);

@@ -174,10 +174,10 @@ TEST_CASE("bands of rows give exactly the whole-image estimate", "[gpu][tiles]")
 
 TEST_CASE("a heavy scene on the software GL: every draw stays under the bound", "[gpu][tiles]") {
   test_gl();
-  // scene1 at 64 bounces and 384x384: one whole-image sample takes longer than the
+  // scene1 at 64 bounces and 512x512: one whole-image sample takes well over the
   // bound on llvmpipe. Starting from one small band, the pacer must keep every draw below.
   const Scene scene = load_scene_file(repo_path("scenes/reference/scene1.xml"));
-  const int W = 384;
+  const int W = 512;
   Renderer r;
   r.resize(W, W);
   RenderSettings s;
@@ -208,5 +208,5 @@ TEST_CASE("a heavy scene on the software GL: every draw stays under the bound", 
   std::printf("heavy scene: %d draws, longest %.1f ms (bound %.0f ms); one whole-image sample takes %.0f ms\n", draws, worst,
               kBoundMs, per_sample);
   CHECK(worst < kBoundMs);
-  CHECK(per_sample > kBoundMs);  // meaningful only if whole-image draws would break the bound
+  CHECK(per_sample > 1.5 * kBoundMs);  // meaningful only if whole-image draws would break the bound
 }

@@ -19,7 +19,7 @@ PackedScene pack_scene(const Scene& scene) {
     p.shapes.set(i, f::light, light);
     p.shapes.set(i, f::a, s.a);
     p.shapes.set(i, f::radius, s.radius);
-    p.shapes.set(i, f::b, s.b);
+    p.shapes.set(i, f::b, s.kind == ShapeKind::Sphere ? s.velocity : s.b);
     p.shapes.set(i, f::c, s.c);
   }
   for (const Material& m : scene.materials) {

@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+// Sphere: a = centre, radius, b = velocity (motion blur). Box: a, b = min, max.
+// Plane: a = normal, radius = d. Triangle: a, b, c = vertices.
 #define PT_SHAPE_RECORD(F)                                   \
   F(int, kind, 0, 0) F(int, material, 0, 1) F(int, light, 0, 2) \
   F(vec3, a, 1, 0) F(float, radius, 1, 3)                    \

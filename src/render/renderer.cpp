@@ -150,6 +150,9 @@ int Renderer::step() {
   p.set("u_cam_right", cb.right);
   p.set("u_cam_up", cb.up);
   p.set("u_size", glm::vec2(float(width_), float(height_)));
+  p.set("u_lens_radius", camera_.aperture);
+  p.set("u_focal_distance", camera_.focal_distance);
+  p.set("u_shutter", camera_.shutter);
   p.set("u_env_color", env_color_);
   if (env_tex_.id()) {
     env_tex_.bind(kEnvUnit);

@@ -30,8 +30,10 @@ struct Shape {
   ShapeKind kind = ShapeKind::Sphere;
   // Sphere: a = center, radius.  Box: a = min, b = max (normalised).
   // Plane: a = unit normal, radius = d (dot(normal, p) = d).  Triangle: a, b, c = v0, v1, v2.
+  // A moving sphere's centre at time t is a + velocity * t.
   glm::vec3 a{0.0f}, b{0.0f}, c{0.0f};
   float radius = 0.0f;
+  glm::vec3 velocity{0.0f};  // Sphere only: motion blur
   int material = 0;
   int light = -1;  // index into Scene::lights when this shape is a light
   bool dynamic = false;
@@ -54,6 +56,9 @@ struct Camera {
   float yaw = 0.0f;    // degrees
   float pitch = 0.0f;  // degrees
   float fov_y = 45.0f;
+  float aperture = 0.0f;         // lens radius (scene units); 0 = pinhole
+  float focal_distance = 1.0f;   // distance of the plane in focus along the view direction
+  float shutter = 0.0f;          // the shutter is open over [0, shutter] (motion blur)
 };
 
 // An equirectangular HDR image, rows top (theta = 0, +y) to bottom, RGBA float.

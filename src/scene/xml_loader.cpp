@@ -24,6 +24,7 @@ void parse_sphere(XmlAttrs& a, Shape& s) {
   s.a = a.vec3("center");
   s.radius = a.number("radius");
   if (!(s.radius > 0.0f)) a.fail("radius must be positive");
+  s.velocity = a.vec3("velocity", glm::vec3(0.0f));  // extension: motion blur
 }
 
 void parse_box(XmlAttrs& a, Shape& s) {
@@ -237,6 +238,12 @@ struct Loader {
     c.yaw = a.number("yaw", 0.0f);
     c.pitch = a.number("pitch", 0.0f);
     if (std::abs(c.pitch) >= 90.0f) a.fail("'pitch' must be within (-90, 90) degrees");
+    // Extensions: a thin lens and a shutter interval.
+    c.aperture = a.number("aperture", 0.0f);
+    c.focal_distance = a.number("focalDistance", 1.0f);
+    c.shutter = a.number("shutter", 0.0f);
+    if (c.aperture < 0.0f || !(c.focal_distance > 0.0f) || c.shutter < 0.0f)
+      a.fail("'aperture' and 'shutter' must be >= 0 and 'focalDistance' > 0");
     a.finish();
     if (e->FirstChildElement()) a.fail("takes no child elements");
   }
@@ -248,6 +255,7 @@ struct Loader {
     l.radius = a.number("radius", 1.0f);
     l.color = a.vec3("color", glm::vec3(1.0f));
     l.intensity = a.number("intensity", 1.0f);
+    const glm::vec3 velocity = a.vec3("velocity", glm::vec3(0.0f));
     if (!(l.radius > 0.0f)) a.fail("'radius' must be positive");
     if (l.intensity < 0.0f || glm::any(glm::lessThan(l.color, glm::vec3(0.0f)))) a.fail("intensity and color must be >= 0");
     a.finish();
@@ -264,6 +272,7 @@ struct Loader {
     s.radius = l.radius;
     s.material = int(scene.materials.size()) - 1;
     s.light = int(scene.lights.size());
+    s.velocity = velocity;
     s.dynamic = true;
     s.line = e->GetLineNum();
     l.shape = int(scene.shapes.size());

@@ -212,3 +212,20 @@ TEST_CASE("FresnelComposite takes exactly two child materials", "[loader]") {
   CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\"><FresnelComposite><Reflect/></FresnelComposite></Sphere></Objects></SceneLevel>") ==
         "bad.xml:5: <FresnelComposite>: must contain exactly two materials: a reflective one, then a transmissive one");
 }
+
+TEST_CASE("camera lens and shutter, sphere velocity", "[loader]") {
+  const Scene s = load_scene_text(
+      "<SceneLevel><Camera position=\"0 0 10\" aperture=\"0.5\" focalDistance=\"12\" shutter=\"0.25\"/>"
+      "<Light position=\"0 5 0\" radius=\"1\" velocity=\"0 1 0\"/>"
+      "<Objects><Sphere center=\"0 0 0\" radius=\"1\" velocity=\"1 0 0\"><Diffuse/></Sphere></Objects></SceneLevel>",
+      "x.xml");
+  CHECK(s.camera.aperture == 0.5f);
+  CHECK(s.camera.focal_distance == 12.0f);
+  CHECK(s.camera.shutter == 0.25f);
+  CHECK(s.shapes[0].velocity == glm::vec3(0, 1, 0));  // the light's sphere
+  CHECK(s.shapes[1].velocity == glm::vec3(1, 0, 0));
+  CHECK(error_of("<SceneLevel><Camera position=\"0 0 10\" focalDistance=\"0\"/></SceneLevel>") ==
+        "bad.xml:1: <Camera>: 'aperture' and 'shutter' must be >= 0 and 'focalDistance' > 0");
+  CHECK(error_of(std::string(kHead) + "<Objects>\n<Box min=\"0 0 0\" max=\"1 1 1\" velocity=\"1 0 0\"><Diffuse/></Box></Objects></SceneLevel>") ==
+        "bad.xml:5: <Box>: unknown attribute 'velocity'");
+}

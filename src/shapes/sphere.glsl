@@ -1,9 +1,13 @@
-// Sphere: <Sphere center="x y z" radius="r"> (a light is a sphere too).
+// Sphere: <Sphere center="x y z" radius="r" velocity="vx vy vz"> (a light is a sphere
+// too). A moving sphere is at centre + velocity * g_time (motion blur).
 // Intersection in the form of Haines et al., "Precision Improvements for Ray/Sphere
 // Intersection" (Ray Tracing Gems, ch. 7): the discriminant is computed from the
 // perpendicular offset, so it stays accurate far from the origin and for small spheres.
+vec3 sphere_center(ShapeRec s) { return s.a + s.b * g_time; }
+
 void intersect_sphere(ShapeRec s, int id, Ray r, inout Hit h) {
-  vec3 f = r.o - s.a;
+  vec3 center = sphere_center(s);
+  vec3 f = r.o - center;
   float b = -dot(f, r.d);
   vec3 l = f + b * r.d;
   float r2 = s.radius * s.radius;
@@ -18,8 +22,8 @@ void intersect_sphere(ShapeRec s, int id, Ray r, inout Hit h) {
   if (t <= 0.0 || t >= h.t) return;
   h.t = t;
   h.id = id;
-  h.n = normalize(r.o + t * r.d - s.a);
-  h.p = s.a + s.radius * h.n;
+  h.n = normalize(r.o + t * r.d - center);
+  h.p = center + s.radius * h.n;
 }
 
 #ifdef HAS_LIGHT_SPHERE
@@ -27,7 +31,7 @@ void intersect_sphere(ShapeRec s, int id, Ray r, inout Hit h) {
 // (pbrt-v4, 6.2.3), which covers exactly its visible part. 1 - cos(theta_max) comes from
 // sin^2 so it stays accurate for small, far lights. No sample from inside the sphere.
 float sphere_cone(ShapeRec s, vec3 p) {
-  vec3 toc = s.a - p;
+  vec3 toc = sphere_center(s) - p;
   float sin2 = s.radius * s.radius / dot(toc, toc);
   return sin2 >= 1.0 ? 0.0 : sin2 / (1.0 + sqrt(1.0 - sin2));
 }
@@ -36,7 +40,7 @@ bool sample_light_sphere(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf)
   float omc = sphere_cone(s, p);
   pdf = omc > 0.0 ? 1.0 / (TWO_PI * omc) : 0.0;
   if (omc <= 0.0) return false;
-  wi = from_local(frame_from(normalize(s.a - p)), sample_uniform_cone(u, omc));
+  wi = from_local(frame_from(normalize(sphere_center(s) - p)), sample_uniform_cone(u, omc));
   return true;
 }
 
