@@ -31,6 +31,9 @@ constexpr int kMaxPassesPerFrame = 64;
 // slow the band halves, down to kMinBandRows; when frames are fast it grows back to the
 // whole image before more draws per frame are added.
 constexpr int kFirstBandRows = 32;
+// Bands shrink only when a one-draw frame is slower than this: a software GL spends a
+// large fixed time per frame that smaller bands cannot remove, only slow the sweep down.
+constexpr double kSlowBandFrameMs = 40.0;
 constexpr int kMinBandRows = 4;
 constexpr double kRateWindowMs = 3000.0;
 
@@ -191,6 +194,38 @@ void App::handle_input(double dt_s) {
   }
 }
 
+// Values of the scene: editing them re-packs its data and restarts, never recompiles
+// (the program depends only on the kinds present). Ranges follow the seed's sliders.
+void App::draw_scene_controls() {
+  bool edited = false;
+  if (!scene_.lights.empty() && ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) {
+    Light& l = scene_.lights[0];
+    bool changed = ImGui::SliderFloat3("position", &l.position.x, -300.0f, 300.0f);
+    changed |= ImGui::ColorEdit3("colour", &l.color.x);
+    changed |= ImGui::SliderFloat("intensity", &l.intensity, 0.0f, 300.0f);
+    if (changed) {
+      sync_light(scene_, 0);
+      edited = true;
+    }
+  }
+  if (scene_.environment.map && ImGui::CollapsingHeader("Environment")) {
+    edited |= ImGui::SliderFloat("rotation", &scene_.environment.rotation, 0.0f, 720.0f, "%.0f deg");
+    edited |= ImGui::SliderFloat("energy", &scene_.environment.intensity, 0.0f, 5.0f);
+  }
+  Camera cam = renderer_->camera();
+  if (ImGui::CollapsingHeader("Lens and shutter")) {
+    const float scale = std::max(1.0f, glm::length(cam.position));  // drag speeds follow the scene's size
+    bool changed = ImGui::DragFloat("aperture", &cam.aperture, 0.001f * scale, 0.0f, scale, "%.3f");
+    changed |= ImGui::DragFloat("focal distance", &cam.focal_distance, 0.005f * scale, 0.001f * scale, 100.0f * scale, "%.2f");
+    changed |= ImGui::SliderFloat("shutter", &cam.shutter, 0.0f, 1.0f);
+    if (changed) renderer_->set_camera(cam);
+  }
+  if (edited) {
+    renderer_->set_scene(scene_);  // the same kinds: the cached program is reused
+    renderer_->set_camera(cam);    // keep the view the user flew to
+  }
+}
+
 void App::draw_panel() {
   const std::string& root = options_.scene_root;
   const auto label = [&](const std::string& path) {
@@ -225,6 +260,8 @@ void App::draw_panel() {
   ImGui::SameLine();
   if (ImGui::Checkbox("auto", &auto_exposure_) && auto_exposure_) next_exposure_at_ = 0;
 
+  draw_scene_controls();
+
   ImGui::Separator();
   const double end_ms = done_ms_ >= 0 ? done_ms_ : last_frame_ms_;
   if (settings_.sample_limit > 0)
@@ -250,7 +287,7 @@ void App::render_passes(double now_ms, double dt_ms) {
   if (dt_ms > kSlowFrameMs) {
     if (passes_per_frame_ > 1) {
       passes_per_frame_ = std::max(1, int(std::min(0.9, kTargetFrameMs / dt_ms) * passes_per_frame_));
-    } else if (band > kMinBandRows) {
+    } else if (band > kMinBandRows && dt_ms > kSlowBandFrameMs) {
       settings_.band_rows = std::max(kMinBandRows, int(band * std::min(0.5, kTargetFrameMs / dt_ms)));
     }
   }

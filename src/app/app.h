@@ -44,6 +44,7 @@ class App {
  private:
   void handle_input(double dt_s);
   void draw_panel();
+  void draw_scene_controls();
   void render_passes(double now_ms, double dt_ms);
   void present(int fb_w, int fb_h);
   void scan_scenes();

@@ -85,6 +85,16 @@ struct Scene {
   std::vector<Material> materials;
 };
 
+// After editing lights[i], writes it into its sphere and emission (the data the
+// renderer packs).
+inline void sync_light(Scene& scene, int i) {
+  const Light& l = scene.lights[size_t(i)];
+  Shape& s = scene.shapes[size_t(l.shape)];
+  s.a = l.position;
+  s.radius = l.radius;
+  scene.materials[size_t(s.material)].emission = l.radiance();
+}
+
 // An emitter of a samplable kind: next-event estimation samples it as a light.
 inline bool is_sampled_light(const Scene& scene, const Shape& s) {
   const Material& m = scene.materials[size_t(s.material)];

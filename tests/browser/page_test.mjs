@@ -198,7 +198,7 @@ async function main() {
     // The mean at the sample limit against the native render.
     const s = await stats(page);
     const se = meanStdError(images[images.length - 1], spp);
-    console.log(`# page: ${s.samples} spp at ${s.width}x${s.height}, mean ${s.mean.map((v) => v.toFixed(5)).join(" ")},` +
+    console.log(`# page: ${s.samples} spp at ${s.width}x${s.height} (${s.samplesPerSecond.toFixed(2)} spp/s), mean ${s.mean.map((v) => v.toFixed(5)).join(" ")},` +
                 ` standard error of the mean ${(100 * se).toFixed(2)}%, renderer ${s.renderer}`);
     if (native.error) {
       check("mean matches native render", false, native.error);
