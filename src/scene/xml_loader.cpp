@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/image.h"
+#include "scene/mesh_json.h"
 #include "scene/xml_attrs.h"
 
 namespace pt {
@@ -209,7 +210,40 @@ struct Loader {
     fail(e, "unknown material <" + std::string(e->Name()) + ">");
   }
 
+  // <Mesh src="file.json" position="x y z" scale="s"> material </Mesh>: the seed's mesh
+  // object; its triangles become Triangle shapes sharing the material (flat shading).
+  // position and scale are extensions (the mesh's coordinates are scaled, then moved).
+  void mesh(const XMLElement* e) {
+    XmlAttrs a(e, file);
+    const std::string src = resolve_path(a.text("src"));
+    const glm::vec3 position = a.vec3("position", glm::vec3(0.0f));
+    const float scale = a.number("scale", 1.0f);
+    if (!(scale > 0.0f)) a.fail("'scale' must be positive");
+    a.finish();
+    const XMLElement* m = e->FirstChildElement();
+    if (!m || m->NextSiblingElement()) a.fail("needs exactly one material element inside");
+    MeshData data;
+    try {
+      data = load_mesh_json(src);
+    } catch (const InputError& err) {
+      a.fail(std::string("cannot load the mesh: ") + err.what());
+    }
+    const int material_index = material(m, glm::vec3(1.0f));
+    for (const glm::uvec3& t : data.triangles) {
+      Shape s;
+      s.kind = ShapeKind::Triangle;
+      s.a = data.positions[t.x] * scale + position;
+      s.b = data.positions[t.y] * scale + position;
+      s.c = data.positions[t.z] * scale + position;
+      if (!(glm::length(glm::cross(s.b - s.a, s.c - s.a)) > 0.0f)) continue;  // degenerate: nothing to hit
+      s.material = material_index;
+      s.line = e->GetLineNum();
+      scene.shapes.push_back(s);
+    }
+  }
+
   void shape(const XMLElement* e) {
+    if (!std::strcmp(e->Name(), "Mesh")) return mesh(e);
     for (const ShapeParser& p : kShapeParsers) {
       if (std::strcmp(e->Name(), p.xml) != 0) continue;
       Shape s;
