@@ -71,6 +71,9 @@ vec3 trace_path(Ray r) {
 #ifdef HAS_MAT_FRESNEL_COMPOSITE
     m = resolve_fresnel_composite(m, wo.z, entering, u_bsdf.w);
 #endif
+#ifdef HAS_TEXTURES
+    m = resolve_texture(m, p);
+#endif
     if (u_nee != 0 && have_lights() && !material_is_delta(m)) {
       LightSample ls;
       if (light_sample(p, u_light.xyz, ls)) {

@@ -37,6 +37,10 @@ PackedScene pack_scene(const Scene& scene) {
     p.materials.set(i, f::exponent, m.exponent);
     p.materials.set(i, f::child_a, m.child_a);
     p.materials.set(i, f::child_b, m.child_b);
+    if (is_procedural_texture(m.kind)) {
+      p.materials.set(i, f::color2, m.color2);  // aliases the dielectric fields (see records.h)
+      p.materials.set(i, f::scale, m.scale);
+    }
   }
   return p;
 }

@@ -21,7 +21,11 @@
   F(int, kind, 0, 0) F(float, roughness, 0, 1) F(float, sampling, 0, 2) F(int, child_b, 0, 3) \
   F(vec3, tint, 1, 0) F(float, ior_n, 1, 3)                                 \
   F(vec3, emission, 2, 0) F(float, ior_k, 2, 3)                             \
-  F(float, eta_outer, 3, 0) F(float, eta_inner, 3, 1) F(float, exponent, 3, 2) F(int, child_a, 3, 3)
+  F(float, eta_outer, 3, 0) F(float, eta_inner, 3, 1) F(float, exponent, 3, 2) F(int, child_a, 3, 3) \
+  F(vec3, color2, 3, 0) F(float, scale, 0, 1)
+
+// Fields may alias one slot when no kind uses both: procedural textures keep their second
+// colour in eta_outer/eta_inner/exponent and their scale in roughness.
 
 // A light is an emissive shape of a samplable kind; its geometry stays in the shape record.
 #define PT_LIGHT_RECORD(F) \

@@ -28,7 +28,12 @@
   X(Emit, emit, "Emit")                               \
   X(Reflect, reflect, "Reflect")                      \
   X(PhongSpecular, phong_specular, "PhongSpecular")   \
-  X(FresnelComposite, fresnel_composite, "FresnelComposite")
+  X(FresnelComposite, fresnel_composite, "FresnelComposite") \
+  X(ChessTexture, chess_texture, "ChessTexture")      \
+  X(WorleyTexture, worley_texture, "WorleyTexture")   \
+  X(PerlinTexture, perlin_texture, "PerlinTexture")   \
+  X(FormulaTexture, formula_texture, "FormulaTexture") \
+  X(FormulaPowTexture, formula_pow_texture, "FormulaPowTexture")
 
 namespace pt {
 
@@ -62,6 +67,12 @@ inline constexpr KindInfo kMaterialKinds[] = {
 };
 inline constexpr int kNumShapeKinds = int(sizeof(kShapeKinds) / sizeof(kShapeKinds[0]));
 inline constexpr int kNumMaterialKinds = int(sizeof(kMaterialKinds) / sizeof(kMaterialKinds[0]));
+
+// Solid textures: Lambertian surfaces whose albedo (tint, color2, scale) varies in space.
+inline constexpr bool is_procedural_texture(MaterialKind k) {
+  return k == MaterialKind::ChessTexture || k == MaterialKind::WorleyTexture || k == MaterialKind::PerlinTexture ||
+         k == MaterialKind::FormulaTexture || k == MaterialKind::FormulaPowTexture;
+}
 
 inline const KindInfo& info(ShapeKind k) { return kShapeKinds[int(k)]; }
 inline const KindInfo& info(MaterialKind k) { return kMaterialKinds[int(k)]; }

@@ -23,6 +23,8 @@ struct Material {
   float inner_ior = 1.5f;     // medium inside
   float exponent = 0.0f;      // PhongSpecular: the lobe's exponent n
   int child_a = -1, child_b = -1;  // FresnelComposite: reflective and transmissive children
+  glm::vec3 color2{0.0f};     // procedural textures: the second colour (the first is tint)
+  float scale = 10.0f;        // procedural textures: feature size in scene units
   int line = 0;               // scene-file line, for messages
 };
 

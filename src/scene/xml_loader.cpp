@@ -71,6 +71,31 @@ void parse_transmit(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
 void parse_smooth_dielectric(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
 void parse_emit(Loader&, XmlAttrs& a, const XMLElement* e, Material& m);
 void parse_fresnel_composite(Loader& l, XmlAttrs& a, const XMLElement* e, Material& m);
+// Procedural (solid) textures: <ChessTexture color1=".." color2=".." scale=".."/> and the
+// same attributes for Worley, Perlin, Formula and FormulaPow; a Lambertian surface whose
+// albedo varies in space (3D, so no uv mapping is needed).
+void parse_texture(XmlAttrs& a, Material& m, glm::vec3 c1, glm::vec3 c2) {
+  m.tint *= a.vec3("color1", c1);
+  m.color2 = a.vec3("color2", c2);
+  m.scale = a.number("scale", 10.0f);
+  if (!(m.scale > 0.0f)) a.fail("'scale' must be positive");
+  const glm::vec3 lo = glm::min(m.tint, m.color2), hi = glm::max(m.tint, m.color2);
+  if (glm::any(glm::lessThan(lo, glm::vec3(0.0f))) || glm::any(glm::greaterThan(hi, glm::vec3(1.0f))))
+    a.fail("colours must be in [0, 1]");
+}
+void parse_chess_texture(Loader&, XmlAttrs& a, const XMLElement*, Material& m) { parse_texture(a, m, glm::vec3(1.0f), glm::vec3(0.0f)); }
+void parse_worley_texture(Loader&, XmlAttrs& a, const XMLElement*, Material& m) {
+  parse_texture(a, m, glm::vec3(0.9f), glm::vec3(0.1f));
+}
+void parse_perlin_texture(Loader&, XmlAttrs& a, const XMLElement*, Material& m) {
+  parse_texture(a, m, glm::vec3(0.9f), glm::vec3(0.1f));
+}
+void parse_formula_texture(Loader&, XmlAttrs& a, const XMLElement*, Material& m) {
+  parse_texture(a, m, glm::vec3(1.0f), glm::vec3(0.0f));
+}
+void parse_formula_pow_texture(Loader&, XmlAttrs& a, const XMLElement*, Material& m) {
+  parse_texture(a, m, glm::vec3(1.0f), glm::vec3(0.0f));
+}
 void parse_reflect(Loader&, XmlAttrs& a, const XMLElement*, Material& m) { m.tint *= a.vec3("color", glm::vec3(1.0f)); }
 void parse_phong_specular(Loader&, XmlAttrs& a, const XMLElement*, Material& m) {
   m.exponent = a.number("n");

@@ -22,7 +22,10 @@ Features Features::of(const Scene& scene) {
   f.env_map = scene.environment.map != nullptr;
   for (const Shape& s : scene.shapes) f.shapes |= 1u << int(s.kind);
   // Every material in the list is used (by a shape or as a composite's child).
-  for (const Material& m : scene.materials) f.materials |= 1u << int(m.kind);
+  for (const Material& m : scene.materials) {
+    f.materials |= 1u << int(m.kind);
+    if (is_procedural_texture(m.kind)) f.materials |= 1u << int(MaterialKind::Diffuse);  // it shades as Diffuse
+  }
   for (const Shape& s : scene.shapes)
     if (is_sampled_light(scene, s)) f.lights |= 1u << int(s.kind);
   return f;
@@ -181,6 +184,16 @@ std::string generate_prelude(const Features& f) {
     smp += cond + "return sample_" + k + "(m, wo, entering, u, s);\n";
   }
   g += delta + "  return true;\n}\n" + eval + "  pdf = 0.0;\n  return vec3(0.0);\n}\n" + smp + "  return false;\n}\n";
+  // Solid textures become a Diffuse record at the hit point: <name>_texture.glsl defines
+  // <name>_pattern(p, scale) in [0, 1], the mix from tint (color1) to color2.
+  std::string tex;
+  for (int i = 0; i < kNumMaterialKinds; ++i) {
+    if (!f.has(MaterialKind(i)) || !is_procedural_texture(MaterialKind(i))) continue;
+    const std::string k = kMaterialKinds[i].glsl;
+    tex += "  if (m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") return textured_diffuse(m, " +
+           k.substr(0, k.size() - std::string("_texture").size()) + "_pattern(p, m.scale));\n";
+  }
+  if (!tex.empty()) g += "#define HAS_TEXTURES 1\nMaterialRec resolve_texture(MaterialRec m, vec3 p) {\n" + tex + "  return m;\n}\n";
   // Light sampling over the emitter kinds present (solid-angle densities).
   std::string lsmp = "bool light_sample_shape(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf) {\n";
   std::string lpdf = "float light_pdf_shape(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {\n";
