@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -209,4 +210,20 @@ TEST_CASE("a heavy scene on the software GL: every draw stays under the bound", 
               kBoundMs, per_sample);
   CHECK(worst < kBoundMs);
   CHECK(per_sample > 1.5 * kBoundMs);  // meaningful only if whole-image draws would break the bound
+}
+
+TEST_CASE("every scene shipped in scenes/ loads, compiles and renders without NaN", "[gpu][scenes]") {
+  test_gl();
+  int count = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(repo_path("scenes"))) {
+    if (entry.path().extension() != ".xml") continue;
+    INFO(entry.path().string());
+    const Scene scene = load_scene_file(entry.path().string());
+    double bad = -1;
+    const std::vector<float> img = render(scene, 4, {}, &bad);
+    CHECK(bad == 0);
+    CHECK(image_stats(img).bad == 0);
+    ++count;
+  }
+  CHECK(count >= 10);
 }
