@@ -236,6 +236,23 @@ async function main() {
     console.log(`# canvas vs the page's display read-back: ${(100 * close / total).toFixed(1)}% of pixels within 2 levels`);
     check("canvas shows the image", close / total > 0.99, `${(100 * close / total).toFixed(1)}% of pixels within 2 levels (want > 99%)`);
 
+    // A slider moved with the mouse: clicking the light's intensity slider (the panel sits
+    // at a fixed place: Dear ImGui's window at 10,10, items 14 font sizes wide) jumps it to
+    // the clicked value; the estimate restarts and the scene gets brighter.
+    // (scene0: in scene2 the <Light> sits inside the emitting box and adds nothing.)
+    await page.evaluate(() => window.ptLoadScene("/scenes/reference/scene0.xml"));
+    await page.evaluate(() => window.ptSetLimit(16));
+    await page.waitForFunction(() => window.ptStats().samples >= 16, null, { timeout: 60000, polling: 100 });
+    const dim = await stats(page);
+    await page.mouse.click(190, 231);  // near the right end of "intensity" (0..300)
+    await page.waitForFunction((m) => { const s = window.ptStats(); return s.samples >= 16 && s.mean[1] !== m; },
+                               dim.mean[1], { timeout: 60000, polling: 100 });
+    const bright = await stats(page);
+    await page.screenshot({ path: join(outDir, "slider.png") });
+    const brighter = bright.mean[1] / dim.mean[1];
+    console.log(`# light intensity slider clicked: mean green radiance ${dim.mean[1].toFixed(4)} -> ${bright.mean[1].toFixed(4)} (x${brighter.toFixed(2)})`);
+    check("moving a slider changes the image", brighter > 1.2, `ratio ${brighter.toFixed(3)} (want > 1.2)`);
+
     // A scene that cannot load reports file and reason; the previous scene keeps rendering.
     await page.evaluate(() => window.ptSetLimit(0));
     const before = await stats(page);
