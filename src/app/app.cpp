@@ -261,6 +261,14 @@ void App::draw_panel() {
   if (ImGui::Checkbox("auto", &auto_exposure_) && auto_exposure_) next_exposure_at_ = 0;
 
   draw_scene_controls();
+  if (options_.save_file) {
+    // PNG: the image as displayed (tone-mapped); HDR: linear radiance.
+    const int w = renderer_->width(), h = renderer_->height();
+    if (ImGui::Button("save PNG")) options_.save_file("pathtracer.png", encode_png(w, h, renderer_->read_display()), "image/png");
+    ImGui::SameLine();
+    if (ImGui::Button("save HDR"))
+      options_.save_file("pathtracer.hdr", encode_hdr(w, h, renderer_->read_radiance()), "image/vnd.radiance");
+  }
 
   ImGui::Separator();
   const double end_ms = done_ms_ >= 0 ? done_ms_ : last_frame_ms_;

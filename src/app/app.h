@@ -3,6 +3,7 @@
 // and calls frame() once per displayed frame between ImGui::NewFrame() and ImGui::Render().
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,8 @@ struct AppOptions {
   int width = 0, height = 0;                             // fixed render size; 0 = framebuffer size
   int sample_limit = 0;                                  // 0 = unlimited
   std::string gl_renderer;                               // shown in the panel and the stats
+  // Hands a finished file to the platform (the page downloads it); unset: no save buttons.
+  std::function<void(const std::string& name, const std::vector<uint8_t>& bytes, const char* mime)> save_file;
 };
 
 class App {

@@ -38,21 +38,31 @@ void append(void* ctx, void* data, int size) {
 
 }  // namespace
 
-bool write_png(const std::string& path, int w, int h, const std::vector<uint8_t>& rgba) {
+std::vector<uint8_t> encode_png(int w, int h, const std::vector<uint8_t>& rgba) {
   std::vector<uint8_t> bytes;
   const uint8_t* last_row = rgba.data() + size_t(h - 1) * w * 4;
-  if (!stbi_write_png_to_func(append, &bytes, w, h, 4, last_row, -w * 4)) return false;
-  return write_file_atomic(path, bytes.data(), bytes.size());
+  if (!stbi_write_png_to_func(append, &bytes, w, h, 4, last_row, -w * 4)) bytes.clear();
+  return bytes;
 }
 
-bool write_hdr(const std::string& path, int w, int h, const std::vector<float>& rgba) {
+std::vector<uint8_t> encode_hdr(int w, int h, const std::vector<float>& rgba) {
   std::vector<float> rgb(size_t(w) * h * 3);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       for (int c = 0; c < 3; ++c) rgb[(size_t(y) * w + x) * 3 + c] = rgba[(size_t(h - 1 - y) * w + x) * 4 + c];
   std::vector<uint8_t> bytes;
-  if (!stbi_write_hdr_to_func(append, &bytes, w, h, 3, rgb.data())) return false;
-  return write_file_atomic(path, bytes.data(), bytes.size());
+  if (!stbi_write_hdr_to_func(append, &bytes, w, h, 3, rgb.data())) bytes.clear();
+  return bytes;
+}
+
+bool write_png(const std::string& path, int w, int h, const std::vector<uint8_t>& rgba) {
+  const std::vector<uint8_t> bytes = encode_png(w, h, rgba);
+  return !bytes.empty() && write_file_atomic(path, bytes.data(), bytes.size());
+}
+
+bool write_hdr(const std::string& path, int w, int h, const std::vector<float>& rgba) {
+  const std::vector<uint8_t> bytes = encode_hdr(w, h, rgba);
+  return !bytes.empty() && write_file_atomic(path, bytes.data(), bytes.size());
 }
 
 bool read_hdr(const std::string& path, int* w, int* h, std::vector<float>* rgba) {

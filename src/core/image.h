@@ -10,6 +10,9 @@
 namespace pt {
 
 // Pixels are RGBA, rows bottom to top (GL order); files are written top to bottom.
+// encode_* return the file's bytes (empty on failure); write_* write them atomically.
+std::vector<uint8_t> encode_png(int w, int h, const std::vector<uint8_t>& rgba);
+std::vector<uint8_t> encode_hdr(int w, int h, const std::vector<float>& rgba);
 bool write_png(const std::string& path, int w, int h, const std::vector<uint8_t>& rgba);
 bool write_hdr(const std::string& path, int w, int h, const std::vector<float>& rgba);
 // Reads a Radiance .hdr (or anything stb_image reads as float) into RGBA, rows bottom to top.

@@ -75,6 +75,17 @@ void frame() {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
+// The browser downloads a Blob of the bytes (copied out of the wasm heap first).
+EM_JS(void, pt_download, (const uint8_t* data, int size, const char* name, const char* mime), {
+  const blob = new Blob([HEAPU8.slice(data, data + size)], {type : UTF8ToString(mime)});
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(blob);
+  a.download = UTF8ToString(name);
+  document.body.appendChild(a);
+  a.click();
+  setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 0);
+});
+
 pt::AppOptions parse_args(int argc, char** argv) {
   pt::AppOptions o;
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -160,6 +171,9 @@ int main(int argc, char** argv) {
 
   char* renderer = pt_js_gl_renderer();
   options.gl_renderer = renderer ? renderer : "";
+  options.save_file = [](const std::string& name, const std::vector<uint8_t>& bytes, const char* mime) {
+    pt_download(bytes.data(), int(bytes.size()), name.c_str(), mime);
+  };
   std::free(renderer);
   try {
     g_app = std::make_unique<pt::App>(options);

@@ -253,6 +253,16 @@ async function main() {
     console.log(`# light intensity slider clicked: mean green radiance ${dim.mean[1].toFixed(4)} -> ${bright.mean[1].toFixed(4)} (x${brighter.toFixed(2)})`);
     check("moving a slider changes the image", brighter > 1.2, `ratio ${brighter.toFixed(3)} (want > 1.2)`);
 
+    // Saving from the page: the two buttons under the panel's sections download the image.
+    const saved = {};
+    for (const [name, x, signature] of [["pathtracer.png", 48, "\x89PNG\r\n\x1a\n"], ["pathtracer.hdr", 121, "#?RADIANCE"]]) {
+      const [download] = await Promise.all([page.waitForEvent("download", { timeout: 30000 }), page.mouse.click(x, 277)]);
+      const bytes = readFileSync(await download.path());
+      saved[name] = download.suggestedFilename() === name && bytes.subarray(0, signature.length).toString("latin1") === signature;
+      console.log(`# saved ${download.suggestedFilename()}: ${bytes.length} bytes`);
+    }
+    check("save PNG and save HDR download the image", saved["pathtracer.png"] && saved["pathtracer.hdr"], JSON.stringify(saved));
+
     // A scene that cannot load reports file and reason; the previous scene keeps rendering.
     await page.evaluate(() => window.ptSetLimit(0));
     const before = await stats(page);
