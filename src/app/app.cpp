@@ -83,6 +83,38 @@ App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make
     const std::string fallback = AppOptions{}.scene;
     if (options_.scene != fallback && load_scene(fallback)) error_ = why;
   }
+  // A view from a link.
+  Camera cam = renderer_->camera();
+  if (options_.camera_position) cam.position = *options_.camera_position;
+  if (options_.camera_yaw_pitch) {
+    cam.yaw = options_.camera_yaw_pitch->x;
+    cam.pitch = std::clamp(options_.camera_yaw_pitch->y, -89.0f, 89.0f);
+  }
+  renderer_->set_camera(cam);
+  if (options_.bounces) settings_.max_bounces = std::clamp(*options_.bounces, 1, 16);
+  if (options_.tonemap) settings_.tonemap = *options_.tonemap;
+  if (options_.exposure) {
+    settings_.exposure = *options_.exposure;
+    auto_exposure_ = false;
+  }
+  renderer_->set_settings(settings_);
+}
+
+std::string App::view_query() const {
+  const Camera& c = renderer_->camera();
+  std::string scene = scene_.path;
+  if (scene.rfind(options_.scene_root + "/", 0) == 0) scene = scene.substr(options_.scene_root.size() + 1);
+  char cam[160];
+  std::snprintf(cam, sizeof cam, "%.4g,%.4g,%.4g,%.4g,%.4g", double(c.position.x), double(c.position.y), double(c.position.z),
+                double(c.yaw), double(c.pitch));
+  std::string q = "scene=" + scene + "&cam=" + cam + "&bounces=" + std::to_string(settings_.max_bounces) +
+                  "&tonemap=" + kToneMapNames[int(settings_.tonemap)];
+  if (!auto_exposure_) {
+    char e[32];
+    std::snprintf(e, sizeof e, "%.4g", double(settings_.exposure));
+    q += std::string("&exposure=") + e;
+  }
+  return q;
 }
 
 void App::scan_scenes() {
@@ -377,6 +409,7 @@ std::string App::stats_json() const {
   std::string j = "{";
   j += "\"samples\":" + std::to_string(renderer_->samples());
   j += ",\"sampleLimit\":" + std::to_string(settings_.sample_limit);
+  j += ",\"view\":" + json_string(view_query());
   j += ",\"samplesPerSecond\":" + json_number(samples_per_second_);
   j += ",\"passesPerFrame\":" + std::to_string(passes_per_frame_);
   j += ",\"bandRows\":" + std::to_string(settings_.band_rows);

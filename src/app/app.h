@@ -20,6 +20,13 @@ struct AppOptions {
   std::string scene = "/scenes/reference/scene2.xml";    // first scene shown
   int width = 0, height = 0;                             // fixed render size; 0 = framebuffer size
   int sample_limit = 0;                                  // 0 = unlimited
+  // A view from a link (URL parameters): the camera pose and main settings, applied
+  // after the first scene loads. Unset fields keep the scene's and the defaults.
+  std::optional<glm::vec3> camera_position;
+  std::optional<glm::vec2> camera_yaw_pitch;           // degrees
+  std::optional<int> bounces;
+  std::optional<ToneMap> tonemap;
+  std::optional<float> exposure;                        // fixed; unset = auto
   std::string gl_renderer;                               // shown in the panel and the stats
   // Hands a finished file to the platform (the page downloads it); unset: no save buttons.
   std::function<void(const std::string& name, const std::vector<uint8_t>& bytes, const char* mime)> save_file;
@@ -37,6 +44,9 @@ class App {
 
   // Test hooks.
   std::string stats_json() const;                        // see web/index.html: ptStats()
+  // The current view as URL parameters (scene, cam, bounces, tonemap, exposure): a link
+  // with them reproduces it. The page keeps its address up to date with this.
+  std::string view_query() const;
   void set_fixed_size(int w, int h);                     // 0, 0: follow the framebuffer
   void set_sample_limit(int n);
   bool load_scene(const std::string& path);              // false: error() says why

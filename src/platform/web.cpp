@@ -93,6 +93,19 @@ pt::AppOptions parse_args(int argc, char** argv) {
     if (key == "--scene") o.scene = value[0] == '/' ? value : o.scene_root + "/" + value;
     if (key == "--size" && std::sscanf(value.c_str(), "%dx%d", &o.width, &o.height) != 2) o.width = o.height = 0;
     if (key == "--limit") o.sample_limit = std::max(0, std::atoi(value.c_str()));
+    float v[5];
+    if (key == "--cam" && std::sscanf(value.c_str(), "%f,%f,%f,%f,%f", &v[0], &v[1], &v[2], &v[3], &v[4]) == 5 &&
+        std::isfinite(v[0] + v[1] + v[2] + v[3] + v[4])) {
+      o.camera_position = glm::vec3(v[0], v[1], v[2]);
+      o.camera_yaw_pitch = glm::vec2(v[3], v[4]);
+    }
+    if (key == "--bounces") o.bounces = std::atoi(value.c_str());
+    pt::ToneMap tm;
+    if (key == "--tonemap" && pt::tonemap_from_name(value.c_str(), &tm)) o.tonemap = tm;
+    if (key == "--exposure" && value != "auto") {
+      const float e = std::strtof(value.c_str(), nullptr);
+      if (e > 0.0f && std::isfinite(e)) o.exposure = e;
+    }
   }
   return o;
 }

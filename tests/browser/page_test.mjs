@@ -263,6 +263,19 @@ async function main() {
     }
     check("save PNG and save HDR download the image", saved["pathtracer.png"] && saved["pathtracer.hdr"], JSON.stringify(saved));
 
+    // A link reproduces a view: the camera and settings in the URL are applied, and the
+    // page's address follows the view.
+    const view = "scene=reference%2Fscene0.xml&cam=10%2C90%2C160%2C110%2C-20&bounces=5&tonemap=filmic&exposure=0.7";
+    const linked = await openPage(context, `${server.url}?${view}&size=64x64&limit=2`, errors);
+    await linked.waitForFunction(() => window.ptStats().samples >= 2, null, { timeout: 60000, polling: 100 });
+    await linked.waitForTimeout(700);
+    const ls = await stats(linked);
+    const address = await linked.evaluate(() => location.search);
+    const expected = "scene=reference/scene0.xml&cam=10,90,160,110,-20&bounces=5&tonemap=filmic&exposure=0.7";
+    check("a link reproduces a view", ls.view === expected && decodeURIComponent(address).includes(expected),
+          `view ${ls.view}, address ${decodeURIComponent(address)}`);
+    await linked.close();
+
     // A scene that cannot load reports file and reason; the previous scene keeps rendering.
     await page.evaluate(() => window.ptSetLimit(0));
     const before = await stats(page);
