@@ -5,6 +5,10 @@
 #include "core/error.h"
 #include "gl_context.h"
 #include "scene/mesh_json.h"
+#include "scene/mesh_obj.h"
+
+#include <filesystem>
+#include <fstream>
 #include "scene/xml_loader.h"
 #include "scene_builders.h"
 #include "test_paths.h"
@@ -22,8 +26,8 @@ std::string mesh_error(const std::string& json) {
   return "(no error)";
 }
 
-Scene cube_scene(bool as_mesh) {
-  const std::string shape = as_mesh ? "<Mesh src=\"reference/cube.json\" position=\"0 1 0\" scale=\"1\">"
+Scene cube_scene(bool as_mesh, const char* src = "reference/cube.json") {
+  const std::string shape = as_mesh ? "<Mesh src=\"" + std::string(src) + "\" position=\"0 1 0\" scale=\"1\">"
                                     : "<Box min=\"-1 0 -1\" max=\"1 2 1\">";
   const std::string close = as_mesh ? "</Mesh>" : "</Box>";
   return load_scene_text(
@@ -67,10 +71,35 @@ TEST_CASE("malformed JSON meshes name the file and line", "[loader][mesh]") {
   }
 }
 
+TEST_CASE("a Wavefront OBJ mesh loads (quads triangulated); bad ones name the file", "[loader][mesh]") {
+  const Scene s = cube_scene(true, "../assets/cube.obj");
+  int triangles = 0;
+  for (const Shape& sh : s.shapes) triangles += sh.kind == ShapeKind::Triangle;
+  CHECK(triangles == 12);
+  const std::string dir = std::string(PT_BINARY_DIR) + "/mesh-test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/bad.obj") << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
+  try {
+    load_mesh_obj(dir + "/bad.obj");
+    FAIL("loaded");
+  } catch (const InputError& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).rfind(dir + "/bad.obj: ", 0) == 0);
+  }
+  try {
+    load_scene_text("<SceneLevel><Camera position=\"0 0 5\"/><Objects>\n<Mesh src=\"m.ply\"><Diffuse/></Mesh></Objects></SceneLevel>", "x.xml");
+    FAIL("loaded");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()) == "x.xml:2: <Mesh>: 'src' must be a .json (the seed's format) or .obj mesh");
+  }
+}
+
 TEST_CASE("a mesh cube renders as the box it describes", "[gpu][mesh]") {
   test_gl();
   const int W = 48, T = 8;
-  const RenderResult a = render_scene(cube_scene(true), W, W, 128), b = render_scene(cube_scene(false), W, W, 128);
+  for (const char* src : {"reference/cube.json", "../assets/cube.obj"}) {
+  INFO(src);
+  const RenderResult a = render_scene(cube_scene(true, src), W, W, 128), b = render_scene(cube_scene(false), W, W, 128);
   double worst = 0;
   for (int ty = 0; ty < W / T; ++ty)
     for (int tx = 0; tx < W / T; ++tx) {
@@ -81,4 +110,5 @@ TEST_CASE("a mesh cube renders as the box it describes", "[gpu][mesh]") {
   INFO("worst tile |z| " << worst);
   CHECK(worst < 5.0);
   CHECK(a.counters.bad_samples == 0);
+  }
 }

@@ -13,6 +13,7 @@
 #include "core/file_io.h"
 #include "core/image.h"
 #include "scene/mesh_json.h"
+#include "scene/mesh_obj.h"
 #include "scene/xml_attrs.h"
 
 namespace pt {
@@ -235,8 +236,9 @@ struct Loader {
     fail(e, "unknown material <" + std::string(e->Name()) + ">");
   }
 
-  // <Mesh src="file.json" position="x y z" scale="s"> material </Mesh>: the seed's mesh
-  // object; its triangles become Triangle shapes sharing the material (flat shading).
+  // <Mesh src="file.json|file.obj" position="x y z" scale="s"> material </Mesh>: the
+  // seed's mesh object (its JSON format, or Wavefront OBJ); its triangles become Triangle
+  // shapes sharing the material (flat shading).
   // position and scale are extensions (the mesh's coordinates are scaled, then moved).
   void mesh(const XMLElement* e) {
     XmlAttrs a(e, file);
@@ -248,8 +250,11 @@ struct Loader {
     const XMLElement* m = e->FirstChildElement();
     if (!m || m->NextSiblingElement()) a.fail("needs exactly one material element inside");
     MeshData data;
+    const bool obj = src.size() > 4 && (src.compare(src.size() - 4, 4, ".obj") == 0 || src.compare(src.size() - 4, 4, ".OBJ") == 0);
+    const bool json = src.size() > 5 && src.compare(src.size() - 5, 5, ".json") == 0;
+    if (!obj && !json) a.fail("'src' must be a .json (the seed's format) or .obj mesh");
     try {
-      data = load_mesh_json(src);
+      data = obj ? load_mesh_obj(src) : load_mesh_json(src);
     } catch (const InputError& err) {
       a.fail(std::string("cannot load the mesh: ") + err.what());
     }

@@ -1,0 +1,12 @@
+// Wavefront OBJ meshes, read with tinyobjloader (Debian's libtinyobjloader-dev, used
+// header-only): positions, triangulated faces; vertex normals and uv when present.
+#pragma once
+#include <string>
+
+#include "scene/mesh_json.h"
+
+namespace pt {
+
+MeshData load_mesh_obj(const std::string& path);  // throws InputError naming the file
+
+}  // namespace pt
