@@ -54,6 +54,26 @@ inline Scene closed_room(const Material& wall) {
   return s;
 }
 
+// A white (albedo 1) infinite plane y = 0 under a sphere light of radiance L, seen from
+// above at an angle, in a black environment: the plane's radiance has a closed form.
+inline Scene sphere_light_over_plane(glm::vec3 center, float radius, float L) {
+  Scene s;
+  s.camera.position = glm::vec3(0.0f, 6.0f, 3.0f);
+  s.camera.yaw = 90.0f;
+  s.camera.pitch = -60.0f;
+  s.environment.color = glm::vec3(0.0f);
+  Material white, emit;
+  emit.kind = MaterialKind::Emit;
+  emit.emission = glm::vec3(L);
+  Shape plane;
+  plane.kind = ShapeKind::Plane;
+  plane.a = glm::vec3(0, 1, 0);
+  plane.material = add_material(s, white);
+  s.shapes.push_back(plane);
+  add_sphere(s, center, radius, add_material(s, emit));
+  return s;
+}
+
 struct RenderResult {
   std::vector<float> rgba;  // mean radiance rgb, mean squared luminance a
   int spp;

@@ -128,21 +128,7 @@ TEST_CASE("sphere light over a white plane: radiance = L (r/D)^2 cos(theta)", "[
   // L (r/D)^2 cos(theta). One bounce, black environment.
   const float L = 10.0f, radius = 0.5f;
   const glm::vec3 center(0.3f, 2.0f, -0.2f);
-  Scene s;
-  s.camera.position = glm::vec3(0.0f, 6.0f, 3.0f);
-  s.camera.yaw = 90.0f;
-  s.camera.pitch = -60.0f;
-  s.environment.color = glm::vec3(0.0f);
-  Material white, emit;
-  emit.kind = MaterialKind::Emit;
-  emit.emission = glm::vec3(L);
-  Shape plane;
-  plane.kind = ShapeKind::Plane;
-  plane.a = glm::vec3(0, 1, 0);
-  plane.radius = 0.0f;
-  plane.material = add_material(s, white);
-  s.shapes.push_back(plane);
-  add_sphere(s, center, radius, add_material(s, emit));
+  const Scene s = sphere_light_over_plane(center, radius, L);
   for (bool nee : {true, false}) {
   RenderSettings st;
   st.max_bounces = 1;

@@ -137,6 +137,12 @@ EMSCRIPTEN_KEEPALIVE const char* pt_stats_json() {
   return g_stats.c_str();
 }
 
+// The current view as URL parameters: cheap (no read-back), for keeping the address current.
+EMSCRIPTEN_KEEPALIVE const char* pt_view_query() {
+  g_stats = g_app ? g_app->view_query() : std::string();
+  return g_stats.c_str();
+}
+
 EMSCRIPTEN_KEEPALIVE void pt_set_size(int w, int h) {
   if (g_app) g_app->set_fixed_size(w, h);
 }
