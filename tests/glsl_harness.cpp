@@ -13,6 +13,7 @@ Features all_features() {
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (kShapeKinds[i].samplable) f.lights |= 1u << i;
   f.env_map = true;
+  f.motion = true;
   return f;
 }
 

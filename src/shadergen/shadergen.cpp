@@ -20,6 +20,7 @@ const char* find_embedded_glsl(const char* name) {
 Features Features::of(const Scene& scene) {
   Features f;
   f.env_map = scene.environment.map != nullptr;
+  for (const Shape& s : scene.shapes) f.motion |= s.velocity != glm::vec3(0.0f);
   for (const Shape& s : scene.shapes) f.shapes |= 1u << int(s.kind);
   // Every material in the list is used (by a shape or as a composite's child).
   for (const Material& m : scene.materials) {
@@ -149,6 +150,7 @@ std::string generate_prelude(const Features& f) {
   for (int i = 0; i < kNumMaterialKinds; ++i)
     if (f.has(MaterialKind(i))) g += "#define HAS_MAT_" + upper(kMaterialKinds[i].glsl) + " 1\n";
   if (f.env_map) g += "#define HAS_ENV_MAP 1\n";
+  if (f.motion) g += "#define HAS_MOTION 1\n";
   g += "#include \"common.glsl\"\n";
   g += glsl_record(shape_layout()) + glsl_record(material_layout()) + glsl_record(light_layout());
   g += glsl_sobol_table();

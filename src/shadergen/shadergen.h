@@ -15,11 +15,13 @@ struct Features {
   uint32_t materials = 0;  // bit i: MaterialKind i is present
   uint32_t lights = 0;     // bit i: an emitter of ShapeKind i is light-sampled
   bool env_map = false;    // an HDR environment map (importance-sampled)
+  bool motion = false;     // a sphere moves (velocity): intersection depends on time
   bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
   bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
   bool has_light(ShapeKind k) const { return lights >> int(k) & 1u; }
   uint64_t key() const {
-    return uint64_t(shapes) | uint64_t(lights) << 16 | uint64_t(materials) << 32 | uint64_t(env_map) << 63;
+    return uint64_t(shapes) | uint64_t(lights) << 16 | uint64_t(materials) << 32 | uint64_t(motion) << 62 |
+           uint64_t(env_map) << 63;
   }
   static Features of(const Scene& scene);
 };

@@ -3,7 +3,12 @@
 // Intersection in the form of Haines et al., "Precision Improvements for Ray/Sphere
 // Intersection" (Ray Tracing Gems, ch. 7): the discriminant is computed from the
 // perpendicular offset, so it stays accurate far from the origin and for small spheres.
+// Only scenes with a moving sphere pay for the time (Features::motion).
+#ifdef HAS_MOTION
 vec3 sphere_center(ShapeRec s) { return s.a + s.b * g_time; }
+#else
+vec3 sphere_center(ShapeRec s) { return s.a; }
+#endif
 
 void intersect_sphere(ShapeRec s, int id, Ray r, inout Hit h) {
   vec3 center = sphere_center(s);
