@@ -9,9 +9,11 @@ struct Ray { vec3 o; vec3 d; };
 // geometric normal of the shape at the hit; p: the hit point, put back onto the surface
 // by the shape (pbrt-v4's re-projection), so that error does not compound bounce after
 // bounce (a ray reflected inside a glass sphere otherwise drifts off its surface).
-struct Hit { float t; int id; vec3 n; vec3 p; };
+// prim: the BVH primitive that was hit (a triangle's vertex attributes hang off it).
+struct Hit { float t; int id; vec3 n; vec3 p; int prim; };
+Hit no_hit() { return Hit(T_INF, -1, vec3(0.0), vec3(0.0), -1); }
 
-int g_rays;    // rays cast by this fragment (counted in scene_intersect)
+int g_rays;    // rays cast by this fragment (counted in trace_scene)
 float g_time;  // the camera sample's time in the shutter interval (motion blur)
 
 float max3(vec3 v) { return max(max(v.x, v.y), v.z); }

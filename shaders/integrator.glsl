@@ -80,8 +80,10 @@ vec3 trace_path(Ray r) {
         float pdf_b;
         vec3 f = material_eval(m, wo, to_local(fr, ls.wi), entering, pdf_b);
         if (max3(f) > 0.0) {
-          Hit sh = scene_intersect(Ray(offset_origin(p, n, ls.wi), ls.wi));
-          if (sh.id == ls.shape) L += beta * f * ls.radiance * (power_heuristic(ls.pdf, pdf_b) / ls.pdf);
+          // Any hit short of the light's surface blocks it; the light itself is skipped, so
+          // its own surface never shadows (the distance keeps a relative margin of 1e-4).
+          if (!occluded(Ray(offset_origin(p, n, ls.wi), ls.wi), ls.dist * 0.9999, ls.shape))
+            L += beta * f * ls.radiance * (power_heuristic(ls.pdf, pdf_b) / ls.pdf);
         }
       }
     }

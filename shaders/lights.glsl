@@ -5,7 +5,8 @@
 // for multiple importance sampling.
 uniform int u_num_lights;
 
-struct LightSample { vec3 wi; float pdf; vec3 radiance; int shape; };
+// dist: how far along wi the light's surface is (T_INF for the environment).
+struct LightSample { vec3 wi; float pdf; vec3 radiance; int shape; float dist; };
 
 // With an environment map, half the light samples go to it (all of them when the scene
 // has no emitters); the densities below include that choice.
@@ -27,6 +28,7 @@ bool light_sample(vec3 p, vec3 u, out LightSample ls) {
     if (!env_sample(u.xy, ls.wi, pdf, ls.radiance)) return false;
     ls.pdf = pdf * pe;
     ls.shape = -1;  // visible when the shadow ray leaves the scene
+    ls.dist = T_INF;
     return true;
   }
   u.z = (u.z - pe) / (1.0 - pe);
@@ -34,7 +36,7 @@ bool light_sample(vec3 p, vec3 u, out LightSample ls) {
   if (u_num_lights == 0) return false;
   int li = min(int(u.z * float(u_num_lights)), u_num_lights - 1);
   LightRec l = load_light(li);
-  if (!light_sample_shape(load_shape(l.shape), p, u.xy, ls.wi, ls.pdf) || !(ls.pdf > 0.0)) return false;
+  if (!light_sample_shape(load_shape(l.shape), p, u.xy, ls.wi, ls.pdf, ls.dist) || !(ls.pdf > 0.0)) return false;
   ls.pdf *= (1.0 - pe) / float(u_num_lights);
   ls.radiance = l.radiance;
   ls.shape = l.shape;

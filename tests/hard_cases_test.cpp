@@ -30,7 +30,7 @@ GlslKernel box_kernel() {
       "uniform vec3 u_dir[8];\n"
       "vec4 kernel(vec4 x, int i) {\n"
       "  ShapeRec s; s.kind = SHAPE_BOX; s.a = vec3(-1.0); s.b = vec3(1.0);\n"
-      "  Hit h = Hit(T_INF, -1, vec3(0.0), vec3(0.0));\n"
+      "  Hit h = no_hit();\n"
       "  Ray r = Ray(x.xyz, u_dir[int(x.w)]);\n  intersect_box(s, 0, r, prepare_box(r), h);\n"
       "  return h.id < 0 ? vec4(-1.0, 0.0, 0.0, 0.0) : vec4(h.t, h.n);\n}\n");
 }
@@ -103,7 +103,7 @@ TEST_CASE("triangles: rays aimed exactly at shared edges and vertices find no cr
       ");\nvec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 5u), 0u);\n"
       "  float hgt = 1.0 + 3.0 * rand01(), rad = hgt * sqrt(rand01()), phi = TWO_PI * rand01();\n"
       "  vec3 o = x.xyz + vec3(rad * cos(phi), rad * sin(phi), hgt);\n"
-      "  Ray r = Ray(o, normalize(x.xyz - o));\n  Hit h = Hit(T_INF, -1, vec3(0.0), vec3(0.0));\n"
+      "  Ray r = Ray(o, normalize(x.xyz - o));\n  Hit h = no_hit();\n"
       "  for (int k = 0; k < NT; ++k) {\n    ShapeRec s; s.kind = SHAPE_TRIANGLE; s.a = V[3 * k]; s.b = V[3 * k + 1]; s.c = V[3 * k + 2];\n"
       "    intersect_triangle(s, k, r, prepare_triangle(r), h);\n  }\n  return vec4(float(h.id), h.t, 0.0, 0.0);\n}\n";
   GlslKernel k(body);

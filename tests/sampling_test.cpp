@@ -183,11 +183,11 @@ TEST_CASE("chi-square: light sampling of spheres, boxes and triangles", "[gpu][s
   // The density of a direction is only defined where the ray meets the light: the
   // density kernel intersects the shape to find the distance and normal there.
   const std::string density_helper =
-      "float light_density(vec3 d) {\n  Hit h = Hit(T_INF, -1, vec3(0.0), vec3(0.0));\n  ShapeRec s = make_light();\n"
+      "float light_density(vec3 d) {\n  Hit h = no_hit();\n  ShapeRec s = make_light();\n"
       "  Ray r = Ray(P, d);\n  if (s.kind == SHAPE_SPHERE) intersect_sphere(s, 0, r, h);\n"
       "  if (s.kind == SHAPE_BOX) intersect_box(s, 0, r, prepare_box(r), h);\n  if (s.kind == SHAPE_TRIANGLE) intersect_triangle(s, 0, r, prepare_triangle(r), h);\n"
       "  if (h.id < 0 || dot(h.n, d) >= 0.0) return 0.0;\n  return light_pdf_shape(s, P, d, h.t, h.n);\n}\n";
-  const char* sample = "  float pdf;\n  ok = light_sample_shape(make_light(), P, vec2(rand01(), rand01()), wi, pdf) && pdf > 0.0;";
+  const char* sample = "  float pdf, dist;\n  ok = light_sample_shape(make_light(), P, vec2(rand01(), rand01()), wi, pdf, dist) && pdf > 0.0;";
   struct C {
     const char* name;
     const char* shape;

@@ -9,7 +9,8 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 want="${1:-test}"
 
 native_pkgs=(cmake ninja-build g++ ccache pkg-config libglm-dev libtinyxml2-dev libstb-dev
-             catch2 libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libgbm1 libtinyobjloader-dev)
+             catch2 libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libgbm1 libtinyobjloader-dev
+             libtinygltf-dev nlohmann-json3-dev)
 web_pkgs=(emscripten dpkg-dev)
 test_pkgs=(chromium nodejs npm)
 

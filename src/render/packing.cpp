@@ -1,27 +1,13 @@
 #include "render/packing.h"
 
-namespace pt {
+#include <chrono>
 
-PackedScene pack_scene(const Scene& scene) {
-  PackedScene p;
-  for (const Shape& s : scene.shapes) {
-    namespace f = shape_rec;
-    const int i = p.shapes.add();
-    p.shapes.set(i, f::kind, int(s.kind));
-    p.shapes.set(i, f::material, s.material);
-    // Emitters of samplable kinds become lights for next-event estimation.
-    int light = -1;
-    if (is_sampled_light(scene, s)) {
-      light = p.lights.add();
-      p.lights.set(light, light_rec::radiance, scene.materials[size_t(s.material)].emission);
-      p.lights.set(light, light_rec::shape, i);
-    }
-    p.shapes.set(i, f::light, light);
-    p.shapes.set(i, f::a, s.a);
-    p.shapes.set(i, f::radius, s.radius);
-    p.shapes.set(i, f::b, s.kind == ShapeKind::Sphere ? s.velocity : s.b);
-    p.shapes.set(i, f::c, s.c);
-  }
+#include "core/error.h"
+
+namespace pt {
+namespace {
+
+void pack_materials(const Scene& scene, PackedScene& p) {
   for (const Material& m : scene.materials) {
     namespace f = material_rec;
     const int i = p.materials.add();
@@ -41,6 +27,164 @@ PackedScene pack_scene(const Scene& scene) {
       p.materials.set(i, f::color2, m.color2);  // aliases the dielectric fields (see records.h)
       p.materials.set(i, f::scale, m.scale);
     }
+  }
+}
+
+void pack_shapes(const Scene& scene, PackedScene& p) {
+  for (const Shape& s : scene.shapes) {
+    namespace f = shape_rec;
+    const int i = p.shapes.add();
+    p.shapes.set(i, f::kind, int(s.kind));
+    p.shapes.set(i, f::material, s.material);
+    // Emitters of samplable kinds become lights for next-event estimation.
+    int light = -1;
+    if (is_sampled_light(scene, s)) {
+      light = p.lights.add();
+      p.lights.set(light, light_rec::radiance, scene.materials[size_t(s.material)].emission);
+      p.lights.set(light, light_rec::shape, i);
+    }
+    p.shapes.set(i, f::light, light);
+    p.shapes.set(i, f::a, s.a);
+    p.shapes.set(i, f::radius, s.radius);
+    p.shapes.set(i, f::b, s.kind == ShapeKind::Sphere ? s.velocity : s.b);
+    p.shapes.set(i, f::c, s.c);
+  }
+}
+
+// What one BVH primitive is: an analytic shape, or triangle `tri` of a shape (a lone
+// Triangle has tri 0).
+struct PrimRef {
+  int shape;
+  int tri;  // -1: analytic
+};
+
+bool degenerate(const glm::vec3 v[3]) { return !(glm::length(glm::cross(v[1] - v[0], v[2] - v[0])) > 0.0f); }
+
+}  // namespace
+
+void mesh_triangle(const Scene& scene, const Shape& s, size_t tri, glm::vec3 out[3]) {
+  const MeshData& m = *scene.meshes[size_t(s.mesh)];
+  const glm::uvec3 t = m.triangles[tri];
+  for (int k = 0; k < 3; ++k) out[k] = glm::vec3(s.transform * glm::vec4(m.positions[t[k]], 1.0f));
+}
+
+PackedScene pack_scene(const Scene& scene) {
+  PackedScene p;
+  pack_shapes(scene, p);
+  pack_materials(scene, p);
+  p.motion_bound = std::max(1.0f, scene.camera.shutter);
+
+  // Bounded primitives and their boxes; unbounded shapes go first in the primitive list.
+  std::vector<PrimRef> refs;
+  std::vector<Aabb> boxes;
+  std::vector<int> vertex_base(scene.shapes.size(), -1);
+  for (size_t i = 0; i < scene.shapes.size(); ++i) {
+    const Shape& s = scene.shapes[i];
+    switch (info(s.kind).bvh) {
+      case BvhRole::Unbounded: {
+        const int k = p.prims.add();
+        p.prims.set(k, prim_rec::tag, -1 - int(i));
+        ++p.unbounded;
+        break;
+      }
+      case BvhRole::Analytic: {
+        Aabb b;
+        if (s.kind == ShapeKind::Sphere) {
+          for (const glm::vec3 c : {s.a, s.a + s.velocity * p.motion_bound}) {
+            b.grow(c - glm::vec3(s.radius));
+            b.grow(c + glm::vec3(s.radius));
+          }
+        } else {
+          b.grow(s.a);
+          b.grow(s.b);
+        }
+        refs.push_back({int(i), -1});
+        boxes.push_back(b.padded());
+        break;
+      }
+      case BvhRole::Triangles: {
+        if (s.kind == ShapeKind::Triangle) {
+          const glm::vec3 v[3] = {s.a, s.b, s.c};
+          if (degenerate(v)) break;
+          Aabb b;
+          for (const glm::vec3& q : v) b.grow(q);
+          refs.push_back({int(i), 0});
+          boxes.push_back(b.padded());
+          break;
+        }
+        const MeshData& m = *scene.meshes[size_t(s.mesh)];
+        if (!m.normals.empty() || !m.uvs.empty()) {
+          // World-space shading normals (inverse transpose) and uv, one record per vertex.
+          vertex_base[i] = p.vertices.count();
+          const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(s.transform)));
+          p.vertices.reserve(p.vertices.count() + int(m.positions.size()));
+          for (size_t v = 0; v < m.positions.size(); ++v) {
+            const int k = p.vertices.add();
+            if (!m.normals.empty()) {
+              const glm::vec3 n = nm * m.normals[v];
+              const float len = glm::length(n);
+              if (len > 0.0f && std::isfinite(len)) p.vertices.set(k, vertex_rec::normal, n / len);
+            }
+            if (!m.uvs.empty()) {
+              p.vertices.set(k, vertex_rec::u, m.uvs[v].x);
+              p.vertices.set(k, vertex_rec::v, m.uvs[v].y);
+            }
+          }
+        }
+        for (size_t t = 0; t < m.triangles.size(); ++t) {
+          glm::vec3 v[3];
+          mesh_triangle(scene, s, t, v);
+          if (degenerate(v)) continue;
+          Aabb b;
+          for (const glm::vec3& q : v) b.grow(q);
+          refs.push_back({int(i), int(t)});
+          boxes.push_back(b.padded());
+        }
+        break;
+      }
+      case BvhRole::None: break;
+    }
+  }
+  // Indices travel as floats: exact up to 2^24.
+  if (refs.size() + size_t(p.unbounded) >= (1u << 24) || scene.shapes.size() >= (1u << 24) || p.vertices.count() >= (1 << 24))
+    throw InputError(scene.path, 0, "the scene has more than 16,777,216 primitives, shapes or mesh vertices");
+
+  const auto t0 = std::chrono::steady_clock::now();
+  BvhBuildOptions opt;
+  opt.max_depth = kBvhStackSize + 1;
+  const Bvh bvh = build_bvh(boxes, opt);
+  p.bvh_build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  p.bvh_depth = bvh.depth;
+
+  p.prims.reserve(p.unbounded + int(refs.size()));
+  for (int r : bvh.order) {
+    const PrimRef& ref = refs[size_t(r)];
+    const Shape& s = scene.shapes[size_t(ref.shape)];
+    const int k = p.prims.add();
+    if (ref.tri < 0) {
+      p.prims.set(k, prim_rec::tag, -1 - ref.shape);
+      continue;
+    }
+    glm::vec3 v[3] = {s.a, s.b, s.c};
+    glm::vec3 attr(-1.0f);
+    if (s.kind == ShapeKind::Mesh) {
+      mesh_triangle(scene, s, size_t(ref.tri), v);
+      if (vertex_base[size_t(ref.shape)] >= 0)
+        attr = glm::vec3(scene.meshes[size_t(s.mesh)]->triangles[size_t(ref.tri)]) + float(vertex_base[size_t(ref.shape)]);
+    }
+    p.prims.set(k, prim_rec::tag, ref.shape);
+    p.prims.set(k, prim_rec::v0, v[0]);
+    p.prims.set(k, prim_rec::v1, v[1]);
+    p.prims.set(k, prim_rec::v2, v[2]);
+    p.prims.set(k, prim_rec::attr, attr);
+  }
+  p.nodes.reserve(int(bvh.nodes.size()));
+  for (const BvhNode& n : bvh.nodes) {
+    const int k = p.nodes.add();
+    p.nodes.set(k, node_rec::lo, n.box.lo);
+    p.nodes.set(k, node_rec::hi, n.box.hi);
+    p.nodes.set(k, node_rec::first, n.count > 0 ? n.first + p.unbounded : n.first);
+    p.nodes.set(k, node_rec::count, n.count);
   }
   return p;
 }

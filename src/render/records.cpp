@@ -21,6 +21,21 @@ const RecordLayout& light_layout() {
   static const RecordLayout l{"light", kTexels, {PT_LIGHT_RECORD(PT_FIELD_LIST)}};
   return l;
 }
+const RecordLayout& node_layout() {
+  using namespace node_rec;
+  static const RecordLayout l{"node", kTexels, {PT_NODE_RECORD(PT_FIELD_LIST)}};
+  return l;
+}
+const RecordLayout& prim_layout() {
+  using namespace prim_rec;
+  static const RecordLayout l{"prim", kTexels, {PT_PRIM_RECORD(PT_FIELD_LIST)}};
+  return l;
+}
+const RecordLayout& vertex_layout() {
+  using namespace vertex_rec;
+  static const RecordLayout l{"vertex", kTexels, {PT_VERTEX_RECORD(PT_FIELD_LIST)}};
+  return l;
+}
 #undef PT_FIELD_LIST
 
 std::string glsl_record(const RecordLayout& l) {
@@ -33,7 +48,7 @@ std::string glsl_record(const RecordLayout& l) {
   s += " };\n";
   s += cap + "Rec load_" + l.name + "(int i) {\n";
   s += "  int base = i * " + std::to_string(l.texels) + ";\n";
-  s += "  ivec2 at = ivec2(base % " + std::to_string(kDataWidth) + ", base / " + std::to_string(kDataWidth) + ");\n";
+  s += "  ivec2 at = ivec2(base & " + std::to_string(kDataWidth - 1) + ", base >> " + std::to_string(kDataWidthLog2) + ");\n";
   for (int t = 0; t < l.texels; ++t)
     s += "  vec4 t" + std::to_string(t) + " = texelFetch(" + tex + ", at + ivec2(" + std::to_string(t) + ", 0), 0);\n";
   s += "  " + cap + "Rec r;\n";

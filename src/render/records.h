@@ -27,15 +27,39 @@
 // Fields may alias one slot when no kind uses both: procedural textures keep their second
 // colour in eta_outer/eta_inner/exponent and their scale in roughness.
 
+// BVH node (accel/bvh.h): bounds; interior: first = index of the first of its two
+// adjacent children, count = 0; leaf: first = its first primitive, count = how many.
+#define PT_NODE_RECORD(F) \
+  F(vec3, lo, 0, 0) F(int, first, 0, 3) \
+  F(vec3, hi, 1, 0) F(int, count, 1, 3)
+
+// A primitive of the BVH, in leaf order. tag >= 0: a triangle of shape `tag` (vertices
+// in world space; attr = the indices of its vertices in the vertex-attribute records, or
+// -1 when the mesh has none); tag < 0: the analytic shape -1 - tag (sphere, box, or an
+// unbounded plane), tested through its shape record.
+#define PT_PRIM_RECORD(F) \
+  F(vec3, v0, 0, 0) F(int, tag, 0, 3) \
+  F(vec3, v1, 1, 0) \
+  F(vec3, v2, 2, 0) \
+  F(vec3, attr, 3, 0)
+
+// Per-vertex attributes of mesh instances (world space): shading normal (0 when the mesh
+// has none) and uv.
+#define PT_VERTEX_RECORD(F) \
+  F(vec3, normal, 0, 0) F(float, u, 0, 3) \
+  F(float, v, 1, 0)
+
 // A light is an emissive shape of a samplable kind; its geometry stays in the shape record.
 #define PT_LIGHT_RECORD(F) \
   F(vec3, radiance, 0, 0) F(int, shape, 0, 3)
 
 namespace pt {
 
-// Data textures are this many texels wide; a record never straddles a row because
-// every record's texel count divides it.
-inline constexpr int kDataWidth = 1024;
+// Data textures are this many texels wide (a power of two: the shader addresses them
+// with a mask and a shift); a record never straddles a row because every record's texel
+// count divides it. Rows are limited by GL_MAX_TEXTURE_SIZE (queried by the renderer).
+inline constexpr int kDataWidthLog2 = 12;
+inline constexpr int kDataWidth = 1 << kDataWidthLog2;
 
 struct Field {
   const char* type;
@@ -63,6 +87,18 @@ namespace material_rec {
 inline constexpr int kTexels = 4;
 PT_MATERIAL_RECORD(PT_FIELD_CONST)
 }
+namespace node_rec {
+inline constexpr int kTexels = 2;
+PT_NODE_RECORD(PT_FIELD_CONST)
+}
+namespace prim_rec {
+inline constexpr int kTexels = 4;
+PT_PRIM_RECORD(PT_FIELD_CONST)
+}
+namespace vertex_rec {
+inline constexpr int kTexels = 2;
+PT_VERTEX_RECORD(PT_FIELD_CONST)
+}
 namespace light_rec {
 inline constexpr int kTexels = 1;
 PT_LIGHT_RECORD(PT_FIELD_CONST)
@@ -71,6 +107,9 @@ PT_LIGHT_RECORD(PT_FIELD_CONST)
 const RecordLayout& shape_layout();
 const RecordLayout& material_layout();
 const RecordLayout& light_layout();
+const RecordLayout& node_layout();
+const RecordLayout& prim_layout();
+const RecordLayout& vertex_layout();
 
 // GLSL for one layout: the struct, the sampler uniform and the loader function.
 std::string glsl_record(const RecordLayout& layout);
@@ -80,6 +119,7 @@ class RecordBuffer {
  public:
   explicit RecordBuffer(int texels_per_record) : texels_(texels_per_record) {}
   int add();  // appends a zeroed record, returns its index
+  void reserve(int records) { data_.reserve(size_t(records) * texels_ * 4); }
   void set(int rec, const Field& f, float v);
   void set(int rec, const Field& f, glm::vec3 v);
   void set(int rec, const Field& f, int v) { set(rec, f, float(v)); }

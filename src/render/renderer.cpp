@@ -9,9 +9,17 @@
 namespace pt {
 namespace {
 
-enum Unit { kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3, kStatsUnit = 4, kEnvUnit = 5, kEnvCdfUnit = 6 };
+enum Unit {
+  kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3, kStatsUnit = 4, kEnvUnit = 5, kEnvCdfUnit = 6,
+  kNodeUnit = 7, kPrimUnit = 8, kVertexUnit = 9
+};
 
-Texture upload(const RecordBuffer& b) {
+Texture upload(const RecordBuffer& b, const char* what) {
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (max_size < kDataWidth || b.rows() > max_size)
+    throw GlError(std::string("the scene's ") + what + " need a " + std::to_string(kDataWidth) + " x " + std::to_string(b.rows()) +
+                  " texture; this GPU allows " + std::to_string(max_size) + " x " + std::to_string(max_size));
   const std::vector<float> t = b.texels();
   return Texture(kDataWidth, b.rows(), GL_RGBA32F, t.data());
 }
@@ -54,11 +62,18 @@ void Renderer::set_scene(const Scene& scene) {
   integrator_ = &slot->program;
   source_ = &slot->source;
   const PackedScene p = pack_scene(scene);
-  shape_tex_ = upload(p.shapes);
-  material_tex_ = upload(p.materials);
-  light_tex_ = upload(p.lights);
+  shape_tex_ = upload(p.shapes, "shapes");
+  material_tex_ = upload(p.materials, "materials");
+  light_tex_ = upload(p.lights, "lights");
+  node_tex_ = upload(p.nodes, "BVH nodes");
+  prim_tex_ = upload(p.prims, "primitives");
+  vertex_tex_ = upload(p.vertices, "mesh vertices");
   num_shapes_ = p.shapes.count();
   num_lights_ = p.lights.count();
+  num_unbounded_ = p.unbounded;
+  num_nodes_ = p.nodes.count();
+  motion_bound_ = p.motion_bound;
+  bvh_stats_ = {p.prims.count() - p.unbounded, p.nodes.count(), p.bvh_depth, p.bvh_build_ms};
   dot_weight_ = scene.dot_weight;
   env_color_ = scene.environment.color;
   const Environment& env = scene.environment;
@@ -136,7 +151,11 @@ int Renderer::step() {
   p.set("u_shape_data", int(kShapeUnit));
   p.set("u_material_data", int(kMaterialUnit));
   p.set("u_light_data", int(kLightUnit));
-  p.set("u_num_shapes", num_shapes_);
+  p.set("u_node_data", int(kNodeUnit));
+  p.set("u_prim_data", int(kPrimUnit));
+  p.set("u_vertex_data", int(kVertexUnit));
+  p.set("u_num_unbounded", num_unbounded_);
+  p.set("u_num_nodes", num_nodes_);
   p.set("u_num_lights", num_lights_);
   p.set("u_max_bounces", settings_.max_bounces);
   p.set("u_nee", settings_.nee ? 1 : 0);
@@ -152,7 +171,7 @@ int Renderer::step() {
   p.set("u_size", glm::vec2(float(width_), float(height_)));
   p.set("u_lens_radius", camera_.aperture);
   p.set("u_focal_distance", camera_.focal_distance);
-  p.set("u_shutter", camera_.shutter);
+  p.set("u_shutter", std::min(camera_.shutter, motion_bound_));  // moving spheres are bounded over [0, motion_bound_]
   p.set("u_env_color", env_color_);
   if (env_tex_.id()) {
     env_tex_.bind(kEnvUnit);
@@ -169,6 +188,9 @@ int Renderer::step() {
   shape_tex_.bind(kShapeUnit);
   material_tex_.bind(kMaterialUnit);
   light_tex_.bind(kLightUnit);
+  node_tex_.bind(kNodeUnit);
+  prim_tex_.bind(kPrimUnit);
+  vertex_tex_.bind(kVertexUnit);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_[1 - cur_].id());
   glViewport(0, 0, width_, height_);  // full size: gl_FragCoord stays in image pixels
   glDisable(GL_BLEND);

@@ -65,6 +65,12 @@ class Renderer {
   const ShaderSource& integrator_source() const { return *source_; }
   double compile_ms() const { return integrator_ ? integrator_->compile_ms() : 0.0; }
   size_t programs_compiled() const { return cache_.size(); }
+  // The acceleration structure of the current scene.
+  struct BvhStats {
+    int primitives = 0, nodes = 0, depth = 0;
+    double build_ms = 0.0;
+  };
+  const BvhStats& bvh_stats() const { return bvh_stats_; }
 
   // Linear radiance (RGB) and mean squared luminance (A), rows bottom to top.
   std::vector<float> read_radiance() const;
@@ -87,6 +93,7 @@ class Renderer {
   std::unordered_map<uint64_t, std::unique_ptr<CachedProgram>> cache_;
   Program display_;
   Texture shape_tex_, material_tex_, light_tex_;
+  Texture node_tex_, prim_tex_, vertex_tex_;  // the BVH, its primitives, mesh vertex attributes
   Texture env_tex_, env_cdf_tex_;  // when the scene has an environment map
   glm::ivec2 env_size_{0};
   float env_rotation_ = 0.0f, env_intensity_ = 1.0f, env_integral_ = 0.0f;
@@ -102,7 +109,9 @@ class Renderer {
   int sweep_spp_ = 1;     // samples per pixel of the sweep in progress
   bool needs_clear_ = true;
   int width_ = 0, height_ = 0;
-  int num_shapes_ = 0, num_lights_ = 0;
+  int num_shapes_ = 0, num_lights_ = 0, num_unbounded_ = 0, num_nodes_ = 0;
+  float motion_bound_ = 1.0f;
+  BvhStats bvh_stats_;
   bool dot_weight_ = true;
   glm::vec3 env_color_{0.5f};
   Camera camera_;

@@ -5,16 +5,9 @@
 #include <string>
 #include <vector>
 
-#include <glm/glm.hpp>
+#include "scene/mesh.h"
 
 namespace pt {
-
-struct MeshData {
-  std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;  // empty or one per position
-  std::vector<glm::vec2> uvs;      // empty or one per position
-  std::vector<glm::uvec3> triangles;
-};
 
 MeshData parse_mesh_json(const std::string& text, const std::string& path);
 MeshData load_mesh_json(const std::string& path);  // throws InputError

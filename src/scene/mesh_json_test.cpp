@@ -42,9 +42,13 @@ Scene cube_scene(bool as_mesh, const char* src = "reference/cube.json") {
 
 TEST_CASE("the reference cube.json loads through <Mesh>", "[loader][mesh]") {
   const Scene s = cube_scene(true);
-  int triangles = 0;
-  for (const Shape& sh : s.shapes) triangles += sh.kind == ShapeKind::Triangle;
-  CHECK(triangles == 12);
+  int meshes = 0;
+  for (const Shape& sh : s.shapes)
+    if (sh.kind == ShapeKind::Mesh) {
+      ++meshes;
+      CHECK(s.meshes.at(size_t(sh.mesh))->triangles.size() == 12);
+    }
+  CHECK(meshes == 1);
   const MeshData m = load_mesh_json(repo_path("scenes/reference/cube.json"));
   CHECK(m.positions.size() == 28);
   CHECK(m.normals.size() == 28);

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/kinds.h"
+#include "scene/mesh.h"
 
 namespace pt {
 
@@ -33,9 +34,12 @@ struct Shape {
   // Sphere: a = center, radius.  Box: a = min, b = max (normalised).
   // Plane: a = unit normal, radius = d (dot(normal, p) = d).  Triangle: a, b, c = v0, v1, v2.
   // A moving sphere's centre at time t is a + velocity * t.
+  // Mesh: an instance of Scene::meshes[mesh], placed by `transform` (object to world).
   glm::vec3 a{0.0f}, b{0.0f}, c{0.0f};
   float radius = 0.0f;
   glm::vec3 velocity{0.0f};  // Sphere only: motion blur
+  int mesh = -1;
+  glm::mat4 transform{1.0f};
   int material = 0;
   int light = -1;  // index into Scene::lights when this shape is a light
   bool dynamic = false;
@@ -85,6 +89,8 @@ struct Scene {
   std::vector<Light> lights;
   std::vector<Shape> shapes;
   std::vector<Material> materials;
+  // Mesh geometry, shared by instances (a scene copy shares it too: it is never edited).
+  std::vector<std::shared_ptr<const MeshData>> meshes;
 };
 
 // After editing lights[i], writes it into its sphere and emission (the data the

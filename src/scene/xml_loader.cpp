@@ -5,13 +5,18 @@
 
 #include <cmath>
 #include <algorithm>
+#include <cctype>
 #include <cstring>
+#include <map>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <tinyxml2.h>
 
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/image.h"
+#include "scene/mesh_gltf.h"
 #include "scene/mesh_json.h"
 #include "scene/mesh_obj.h"
 #include "scene/xml_attrs.h"
@@ -58,8 +63,11 @@ struct ShapeParser {
   ShapeKind kind;
   void (*parse)(XmlAttrs&, Shape&);
 };
+// Meshes are read from files by Loader::mesh, which shape() calls before this table.
+void parse_mesh(XmlAttrs& a, Shape&) { a.fail("internal: <Mesh> is handled by the mesh loader"); }
+
 constexpr ShapeParser kShapeParsers[] = {
-#define PT_X(e, g, x, l, r) {x, ShapeKind::e, &parse_##g},
+#define PT_X(e, g, x, l, r, b) {x, ShapeKind::e, &parse_##g},
     PT_SHAPE_KINDS(PT_X)
 #undef PT_X
 };
@@ -167,6 +175,7 @@ void parse_emit(Loader&, XmlAttrs& a, const XMLElement* e, Material& m) {
 struct Loader {
   std::string file;
   Scene scene;
+  std::map<std::string, std::vector<GltfPart>> mesh_files;  // loaded once per path
 
   // A path in a scene file is relative to the scene file's folder.
   std::string resolve_path(const std::string& p) const {
@@ -236,37 +245,82 @@ struct Loader {
     fail(e, "unknown material <" + std::string(e->Name()) + ">");
   }
 
-  // <Mesh src="file.json|file.obj" position="x y z" scale="s"> material </Mesh>: the
-  // seed's mesh object (its JSON format, or Wavefront OBJ); its triangles become Triangle
-  // shapes sharing the material (flat shading).
-  // position and scale are extensions (the mesh's coordinates are scaled, then moved).
+  // <Mesh src="file.json|.obj|.gltf|.glb" position="x y z" rotation="x y z" scale="s">
+  // [material] </Mesh>: an instance of a mesh file (the seed's JSON format, Wavefront OBJ
+  // or glTF 2.0), placed by scale, then rotation (degrees about x, then y, then z), then
+  // position (extensions). The same file used twice is loaded once and instanced. The
+  // material inside applies to every triangle; a glTF file may go without one and then
+  // brings its own materials (see gltf_material).
+  int mesh_index(const std::shared_ptr<const MeshData>& d) {
+    for (size_t i = 0; i < scene.meshes.size(); ++i)
+      if (scene.meshes[i] == d) return int(i);
+    scene.meshes.push_back(d);
+    return int(scene.meshes.size()) - 1;
+  }
+
+  int gltf_material(const GltfMaterial& g, int line) {
+    Material m;
+    m.line = line;
+    m.tint = g.base_color;
+    if (g.emissive != glm::vec3(0.0f)) {
+      m.kind = MaterialKind::Emit;
+      m.emission = g.emissive;
+    } else if (g.transmission >= 0.5f) {
+      m.kind = MaterialKind::SmoothDielectric;
+      m.ior = glm::vec2(g.ior, 0.0f);
+      m.inner_ior = g.ior;
+    } else if (g.metallic >= 0.5f) {
+      m.kind = MaterialKind::Metal;  // a bright conductor tinted by the base colour
+      m.ior = glm::vec2(0.15f, 3.6f);
+      m.glossiness = glm::clamp(g.roughness, 0.0f, 1.0f);  // GGX alpha = roughness^2, as glTF
+    }
+    scene.materials.push_back(m);
+    return int(scene.materials.size()) - 1;
+  }
+
   void mesh(const XMLElement* e) {
     XmlAttrs a(e, file);
     const std::string src = resolve_path(a.text("src"));
     const glm::vec3 position = a.vec3("position", glm::vec3(0.0f));
+    const glm::vec3 rotation = a.vec3("rotation", glm::vec3(0.0f));
     const float scale = a.number("scale", 1.0f);
     if (!(scale > 0.0f)) a.fail("'scale' must be positive");
     a.finish();
+    auto ends = [&](const char* ext) {
+      const size_t n = std::strlen(ext);
+      if (src.size() <= n) return false;
+      for (size_t i = 0; i < n; ++i)
+        if (std::tolower(static_cast<unsigned char>(src[src.size() - n + i])) != ext[i]) return false;
+      return true;
+    };
+    const bool gltf = ends(".gltf") || ends(".glb");
+    if (!gltf && !ends(".obj") && !ends(".json")) a.fail("'src' must be a .json (the seed's format), .obj, .gltf or .glb mesh");
     const XMLElement* m = e->FirstChildElement();
-    if (!m || m->NextSiblingElement()) a.fail("needs exactly one material element inside");
-    MeshData data;
-    const bool obj = src.size() > 4 && (src.compare(src.size() - 4, 4, ".obj") == 0 || src.compare(src.size() - 4, 4, ".OBJ") == 0);
-    const bool json = src.size() > 5 && src.compare(src.size() - 5, 5, ".json") == 0;
-    if (!obj && !json) a.fail("'src' must be a .json (the seed's format) or .obj mesh");
-    try {
-      data = obj ? load_mesh_obj(src) : load_mesh_json(src);
-    } catch (const InputError& err) {
-      a.fail(std::string("cannot load the mesh: ") + err.what());
+    if ((!m && !gltf) || (m && m->NextSiblingElement())) a.fail(gltf ? "takes at most one material element inside" : "needs exactly one material element inside");
+    std::vector<GltfPart>& parts = mesh_files[src];
+    if (parts.empty()) {
+      try {
+        if (gltf) {
+          parts = load_gltf(src);
+        } else {
+          parts.push_back({std::make_shared<const MeshData>(ends(".obj") ? load_mesh_obj(src) : load_mesh_json(src)), glm::mat4(1.0f), {}});
+        }
+      } catch (const InputError& err) {
+        a.fail(std::string("cannot load the mesh: ") + err.what());
+      }
     }
-    const int material_index = material(m, glm::vec3(1.0f));
-    for (const glm::uvec3& t : data.triangles) {
+    glm::mat4 place = glm::translate(glm::mat4(1.0f), position);
+    place = glm::rotate(place, glm::radians(rotation.z), glm::vec3(0, 0, 1));
+    place = glm::rotate(place, glm::radians(rotation.y), glm::vec3(0, 1, 0));
+    place = glm::rotate(place, glm::radians(rotation.x), glm::vec3(1, 0, 0));
+    place = glm::scale(place, glm::vec3(scale));
+    const int shared_material = m ? material(m, glm::vec3(1.0f)) : -1;
+    for (const GltfPart& part : parts) {
       Shape s;
-      s.kind = ShapeKind::Triangle;
-      s.a = data.positions[t.x] * scale + position;
-      s.b = data.positions[t.y] * scale + position;
-      s.c = data.positions[t.z] * scale + position;
-      if (!(glm::length(glm::cross(s.b - s.a, s.c - s.a)) > 0.0f)) continue;  // degenerate: nothing to hit
-      s.material = material_index;
+      s.kind = ShapeKind::Mesh;
+      s.mesh = mesh_index(part.mesh);
+      s.transform = place * part.transform;
+      s.material = shared_material >= 0 ? shared_material : gltf_material(part.material, e->GetLineNum());
       s.line = e->GetLineNum();
       scene.shapes.push_back(s);
     }

@@ -43,10 +43,11 @@ vec3 box_face_areas(ShapeRec s, vec3 p) {
   return vec3(e.y * e.z, e.x * e.z, e.x * e.y) * visible;
 }
 
-bool sample_light_box(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf) {
+bool sample_light_box(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {
   vec3 area = box_face_areas(s, p);
   float total = area.x + area.y + area.z;
   pdf = 0.0;
+  dist = 0.0;
   if (total <= 0.0) return false;
   float pick = u.x * total;
   // The chosen face as an axis mask; (v, u.y) span its two other axes, in order.
@@ -59,6 +60,7 @@ bool sample_light_box(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf) {
   vec3 d = q - p;
   float t2 = dot(d, d);
   wi = d * inversesqrt(t2);
+  dist = sqrt(t2);
   float cos_l = abs(dot(wi, axis));
   if (cos_l <= 0.0) return false;
   pdf = t2 / (cos_l * total);

@@ -41,11 +41,18 @@ float sphere_cone(ShapeRec s, vec3 p) {
   return sin2 >= 1.0 ? 0.0 : sin2 / (1.0 + sqrt(1.0 - sin2));
 }
 
-bool sample_light_sphere(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf) {
+bool sample_light_sphere(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {
   float omc = sphere_cone(s, p);
   pdf = omc > 0.0 ? 1.0 / (TWO_PI * omc) : 0.0;
+  dist = 0.0;
   if (omc <= 0.0) return false;
   wi = from_local(frame_from(normalize(sphere_center(s) - p)), sample_uniform_cone(u, omc));
+  // Distance to the near surface along wi (a direction inside the cone meets it; rounding
+  // at the cone's rim is clamped to the tangent point).
+  vec3 f = p - sphere_center(s);
+  float b = -dot(f, wi);
+  vec3 l = f + b * wi;
+  dist = b - sqrt(max(s.radius * s.radius - dot(l, l), 0.0));
   return true;
 }
 

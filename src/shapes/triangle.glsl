@@ -38,14 +38,14 @@ TriangleRay prepare_triangle(Ray r) {
   return TriangleRay(ex - dot(r.d, ex) * sz * ez, ey - dot(r.d, ey) * sz * ez, sz * ez);
 }
 
-void intersect_triangle(ShapeRec s, int id, Ray r, TriangleRay tr, inout Hit h) {
-  vec3 a = s.a - r.o, b = s.b - r.o, c = s.c - r.o;
+void intersect_triangle_verts(vec3 va, vec3 vb, vec3 vc, int id, Ray r, TriangleRay tr, inout Hit h) {
+  vec3 a = va - r.o, b = vb - r.o, c = vc - r.o;
   vec2 a2 = vec2(dot(tr.x, a), dot(tr.y, a));
   vec2 b2 = vec2(dot(tr.x, b), dot(tr.y, b));
   vec2 c2 = vec2(dot(tr.x, c), dot(tr.y, c));
-  float u = edge_function(s.c, s.b, c2, b2);  // cx * by - cy * bx
-  float v = edge_function(s.a, s.c, a2, c2);  // ax * cy - ay * cx
-  float w = edge_function(s.b, s.a, b2, a2);  // bx * ay - by * ax
+  float u = edge_function(vc, vb, c2, b2);  // cx * by - cy * bx
+  float v = edge_function(va, vc, a2, c2);  // ax * cy - ay * cx
+  float w = edge_function(vb, va, b2, a2);  // bx * ay - by * ax
   if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return;
   float det = u + v + w;
   if (det == 0.0) return;
@@ -53,24 +53,33 @@ void intersect_triangle(ShapeRec s, int id, Ray r, TriangleRay tr, inout Hit h) 
   if (!(t > 0.0) || t >= h.t) return;
   h.t = t;
   h.id = id;
-  h.n = normalize(cross(s.b - s.a, s.c - s.a));
-  h.p = (u * s.a + v * s.b + w * s.c) / det;  // barycentric: on the triangle's plane by construction
+  h.n = normalize(cross(vb - va, vc - va));
+  h.p = (u * va + v * vb + w * vc) / det;  // barycentric: on the triangle's plane by construction
+}
+
+// A triangle primitive of the BVH (a lone Triangle or a mesh's): vertices inline.
+void triangle_prim(PrimRec p, Ray r, TriangleRay tr, inout Hit h) { intersect_triangle_verts(p.v0, p.v1, p.v2, p.tag, r, tr, h); }
+
+void intersect_triangle(ShapeRec s, int id, Ray r, TriangleRay tr, inout Hit h) {
+  intersect_triangle_verts(s.a, s.b, s.c, id, r, tr, h);
 }
 
 #ifdef HAS_LIGHT_TRIANGLE
 // Emissive triangle: uniform by area (square-root barycentrics), emitting from its
 // front side only, solid-angle density t^2 / (cos A).
-bool sample_light_triangle(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf) {
+bool sample_light_triangle(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {
   vec3 c = cross(s.b - s.a, s.c - s.a);
   float area = 0.5 * length(c);
   vec3 n = c / (2.0 * area);
   pdf = 0.0;
+  dist = 0.0;
   if (dot(n, p - s.a) <= 0.0) return false;  // p sees the back side
   float r = sqrt(u.x);
   vec3 q = s.a * (1.0 - r) + s.b * (r * (1.0 - u.y)) + s.c * (r * u.y);
   vec3 d = q - p;
   float t2 = dot(d, d);
   wi = d * inversesqrt(t2);
+  dist = sqrt(t2);
   float cos_l = -dot(n, wi);
   if (cos_l <= 0.0) return false;
   pdf = t2 / (cos_l * area);

@@ -1,0 +1,90 @@
+// bvh.glsl: ray traversal of the scene's BVH (accel/bvh.h, packed by render/packing.cpp).
+// Binary nodes with adjacent children: at an interior node both children's boxes are
+// fetched and tested together, the nearer is visited next and the farther pushed on a
+// small stack (Aila and Laine 2009, without the persistent threads). Primitives are
+// stored in leaf order; planes, having no bounds, sit before them and every ray tests
+// them. The same loop answers nearest-hit queries and shadow queries (any hit before
+// tmax ends it), which the compiler specialises since `any_hit` is constant at each call.
+uniform int u_num_unbounded;  // prims [0, n) are outside the hierarchy
+uniform int u_num_nodes;      // 0: no bounded primitive
+
+// Entry distance of the ray into [lo, hi] clamped to >= 0, or T_INF when it misses the box
+// or enters beyond tmax. The far distance is widened by 1 + 2 gamma(3) (Ize, "Robust BVH
+// Ray Traversal", JCGT 2013) so rounding never culls a box the ray grazes; boxes are also
+// padded when built. inv has no infinities (zero direction components are replaced by a
+// tiny value), so no 0 * inf makes a NaN.
+float bvh_box_entry(vec3 lo, vec3 hi, vec3 o, vec3 inv, float tmax) {
+  vec3 a = (lo - o) * inv;
+  vec3 b = (hi - o) * inv;
+  float tn = max(max3(min(a, b)), 0.0);
+  vec3 fa = max(a, b);
+  float tf = min(min(fa.x, fa.y), fa.z) * 1.00000036;
+  return tn <= tf && tn <= tmax ? tn : T_INF;
+}
+
+// A stack entry: an interior node as the index of its first child (>= 0), a leaf as
+// -1 - (first primitive * 8 + count - 1) (leaves hold 1..8 primitives).
+int bvh_entry(NodeRec n) { return n.count == 0 ? n.first : -1 - (n.first * 8 + n.count - 1); }
+
+void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
+  PrimRec p = load_prim(i);
+  float before = h.t;
+  if (p.tag >= 0) {
+#ifdef HAS_PRIM_TRIANGLES
+    if (p.tag != skip) triangle_prim(p, r, pre.triangle, h);
+#endif
+  } else if (-1 - p.tag != skip) {
+    intersect_analytic(-1 - p.tag, r, pre, h);
+  }
+  if (h.t < before) h.prim = i;
+}
+
+const int BVH_STACK_SIZE = 48;  // = kBvhStackSize: the builder bounds the depth by it
+
+// Nearest hit closer than tmax (any_hit: the first found), ignoring shape `skip`.
+Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
+  ++g_rays;
+  Hit h = no_hit();
+  h.t = tmax;
+  RayPre pre = prepare_ray(r);
+  for (int i = 0; i < u_num_unbounded; ++i) bvh_prim(i, r, pre, skip, h);
+  if ((any_hit && h.id >= 0) || u_num_nodes == 0) return h;
+  vec3 inv = 1.0 / mix(r.d, vec3(1e-30), equal(r.d, vec3(0.0)));
+  NodeRec root = load_node(0);
+  if (bvh_box_entry(root.lo, root.hi, r.o, inv, h.t) == T_INF) return h;
+  int stack[BVH_STACK_SIZE];
+  int sp = 0;
+  int cur = bvh_entry(root);
+  for (;;) {
+    if (cur >= 0) {
+      NodeRec a = load_node(cur);
+      NodeRec b = load_node(cur + 1);
+      float ta = bvh_box_entry(a.lo, a.hi, r.o, inv, h.t);
+      float tb = bvh_box_entry(b.lo, b.hi, r.o, inv, h.t);
+      if (ta < T_INF && tb < T_INF) {
+        bool a_first = ta <= tb;
+        stack[sp++] = bvh_entry(a_first ? b : a);
+        cur = bvh_entry(a_first ? a : b);
+        continue;
+      }
+      if (ta < T_INF || tb < T_INF) {
+        cur = bvh_entry(ta < T_INF ? a : b);
+        continue;
+      }
+    } else {
+      int code = -1 - cur;
+      int first = code >> 3;
+      int end = first + (code & 7) + 1;
+      for (int i = first; i < end; ++i) bvh_prim(i, r, pre, skip, h);
+      if (any_hit && h.id >= 0) return h;
+    }
+    if (sp == 0) break;
+    cur = stack[--sp];
+  }
+  return h;
+}
+
+Hit scene_intersect(Ray r) { return trace_scene(r, T_INF, false, -1); }
+
+// Whether anything but shape `skip` lies on the ray before tmax.
+bool occluded(Ray r, float tmax, int skip) { return trace_scene(r, tmax, true, skip).id >= 0; }

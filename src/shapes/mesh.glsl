@@ -1,0 +1,28 @@
+// Mesh: <Mesh src="model.gltf|.glb|.obj|.json" position=".." rotation=".." scale="..">,
+// an instance of a triangle mesh. Its triangles are BVH primitives with world-space
+// vertices inline (see bvh.glsl and the prim record); this file holds what a hit on one
+// needs afterwards: the interpolated per-vertex attributes (shading normal, uv).
+// Barycentrics of p (on the triangle's plane) from the sub-triangle areas.
+vec3 mesh_barycentrics(PrimRec t, vec3 p) {
+  vec3 e1 = t.v1 - t.v0, e2 = t.v2 - t.v0, q = p - t.v0;
+  vec3 n = cross(e1, e2);
+  float inv = 1.0 / dot(n, n);
+  float b1 = dot(cross(q, e2), n) * inv;
+  float b2 = dot(cross(e1, q), n) * inv;
+  return vec3(1.0 - b1 - b2, b1, b2);
+}
+
+// The interpolated shading normal (unit; vec3(0) when the mesh has no normals) and uv of
+// a hit on a mesh triangle; false when the mesh has no vertex attributes.
+bool mesh_attributes(Hit h, out vec3 ns, out vec2 uv) {
+  ns = vec3(0.0);
+  uv = vec2(0.0);
+  PrimRec t = load_prim(h.prim);
+  if (t.attr.x < 0.0) return false;
+  vec3 b = mesh_barycentrics(t, h.p);
+  VertexRec a = load_vertex(int(t.attr.x)), c = load_vertex(int(t.attr.y)), d = load_vertex(int(t.attr.z));
+  vec3 n = b.x * a.normal + b.y * c.normal + b.z * d.normal;
+  ns = dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
+  uv = b.x * vec2(a.u, a.v) + b.y * vec2(c.u, c.v) + b.z * vec2(d.u, d.v);
+  return true;
+}
