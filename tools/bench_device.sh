@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes or speed}"
+part="${1:?part: cornell, scenes, speed or bvh}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -48,6 +48,28 @@ case "$part" in
   speed)
     for s in scenes/reference/scene0.xml scenes/reference/scene1.xml scenes/reference/scene2.xml scenes/cornell-box.xml; do
       $B render "$s" --size 512x512 --spp 2048 --out "$w/$(basename "$s" .xml)-512.png"
+    done
+    ;;
+  bvh)
+    # One million triangles (1,310,720: scenes/bench/million.xml) at 1080p, every ray
+    # counted (camera, bounce, shadow); the glTF scene; then the shader for 10 and for
+    # 10,000 objects (spheres and boxes), which must be the same size and compile alike.
+    $B render scenes/bench/million.xml --size $S --spp 64 --out "$w/million-1080p.png"
+    $B render scenes/bench/million.xml --size $S --spp 64 --bounces 1 --out "$w/million-1080p-1bounce.png"
+    $B render scenes/gltf-instances.xml --size $S --spp 64 --out "$w/gltf-1080p.png"
+    for n in 10 10000; do
+      f="$w/objects-$n.xml"
+      {
+        echo '<SceneLevel><Camera position="50 50 -150" up="0 1 0" yaw="270" pitch="0"/>'
+        echo '<Light position="50 200 -100" radius="10" color="1 1 1" intensity="50"/><Objects>'
+        for ((i = 0; i < n; ++i)); do
+          x=$((i % 100)) y=$((i / 100))
+          if ((i % 2)); then echo "<Sphere center=\"$x $y 0\" radius=\"0.4\"><Diffuse/></Sphere>"
+          else echo "<Box min=\"$x $y 0\" max=\"$x.5 $y.5 0.5\"><Diffuse/></Box>"; fi
+        done
+        echo '</Objects></SceneLevel>'
+      } > "$f"
+      $B render "$f" --size $S --spp 64 --out "$w/objects-$n.png"
     done
     ;;
 esac

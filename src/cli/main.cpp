@@ -29,7 +29,9 @@ int run_render(const Options& o) {
   for (const std::string& out : o.outs)
     if (!ends_with(out, ".png") && !ends_with(out, ".hdr") && !ends_with(out, ".pfm"))
       usage_error("--out must end in .png, .hdr or .pfm");
+  const auto tl = std::chrono::steady_clock::now();
   const Scene scene = load_scene_file(o.scene);  // before GL: bad input fails fast
+  const double load_ms = seconds_since(tl) * 1e3;
   HeadlessGl gl;
   std::printf("GL: %s\n", gl.description().c_str());
   Renderer r;
@@ -38,9 +40,15 @@ int run_render(const Options& o) {
   settings.sample_limit = o.spp;
   settings.spp_per_pass = o.per_pass > 0 ? o.per_pass : 1;
   r.set_settings(settings);
+  const auto ts = std::chrono::steady_clock::now();
   r.set_scene(scene);
-  std::printf("scene: %s (%zu objects, %zu materials, %zu lights)\n", o.scene.c_str(), scene.shapes.size(),
-              scene.materials.size(), scene.lights.size());
+  glFinish();
+  const double set_ms = seconds_since(ts) * 1e3 - r.compile_ms();
+  std::printf("scene: %s (%zu objects, %zu materials, %zu lights), loaded in %.0f ms\n", o.scene.c_str(), scene.shapes.size(),
+              scene.materials.size(), scene.lights.size(), load_ms);
+  const Renderer::BvhStats& bs = r.bvh_stats();
+  std::printf("BVH: %d primitives, %d nodes, depth %d, built in %.0f ms; packed and uploaded in %.0f ms in all\n", bs.primitives,
+              bs.nodes, bs.depth, bs.build_ms, set_ms);
   std::printf("shader: %zu bytes, compiled and linked in %.1f ms\n", r.integrator_source().text.size(), r.compile_ms());
 
   DrawPacer pacer(40.0);

@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/image.h"
+#include "scene/mesh_generate.h"
 #include "scene/mesh_gltf.h"
 #include "scene/mesh_json.h"
 #include "scene/mesh_obj.h"
@@ -280,11 +281,24 @@ struct Loader {
 
   void mesh(const XMLElement* e) {
     XmlAttrs a(e, file);
-    const std::string src = resolve_path(a.text("src"));
+    const bool generated = e->Attribute("generate") != nullptr;
+    const std::string src = generated ? std::string() : resolve_path(a.text("src"));
     const glm::vec3 position = a.vec3("position", glm::vec3(0.0f));
     const glm::vec3 rotation = a.vec3("rotation", glm::vec3(0.0f));
     const float scale = a.number("scale", 1.0f);
     if (!(scale > 0.0f)) a.fail("'scale' must be positive");
+    std::string key = src;
+    int level = 0;
+    float displace = 0.0f;
+    if (generated) {
+      if (e->Attribute("src")) a.fail("takes 'src' or 'generate', not both");
+      if (a.text("generate") != "icosphere") a.fail("'generate' must be \"icosphere\"");
+      level = int(a.number("level", 5.0f));
+      displace = a.number("displace", 0.0f);
+      if (level < 0 || level > 9) a.fail("'level' must be in 0..9 (20 * 4^level triangles)");
+      if (!(displace >= 0.0f && displace < 0.5f)) a.fail("'displace' must be in [0, 0.5)");
+      key = "generate:icosphere:" + std::to_string(level) + ":" + std::to_string(displace);
+    }
     a.finish();
     auto ends = [&](const char* ext) {
       const size_t n = std::strlen(ext);
@@ -294,13 +308,16 @@ struct Loader {
       return true;
     };
     const bool gltf = ends(".gltf") || ends(".glb");
-    if (!gltf && !ends(".obj") && !ends(".json")) a.fail("'src' must be a .json (the seed's format), .obj, .gltf or .glb mesh");
+    if (!generated && !gltf && !ends(".obj") && !ends(".json"))
+      a.fail("'src' must be a .json (the seed's format), .obj, .gltf or .glb mesh");
     const XMLElement* m = e->FirstChildElement();
     if ((!m && !gltf) || (m && m->NextSiblingElement())) a.fail(gltf ? "takes at most one material element inside" : "needs exactly one material element inside");
-    std::vector<GltfPart>& parts = mesh_files[src];
+    std::vector<GltfPart>& parts = mesh_files[key];
     if (parts.empty()) {
       try {
-        if (gltf) {
+        if (generated) {
+          parts.push_back({std::make_shared<const MeshData>(generate_icosphere(level, displace)), glm::mat4(1.0f), {}});
+        } else if (gltf) {
           parts = load_gltf(src);
         } else {
           parts.push_back({std::make_shared<const MeshData>(ends(".obj") ? load_mesh_obj(src) : load_mesh_json(src)), glm::mat4(1.0f), {}});
