@@ -74,11 +74,24 @@ vec3 trace_path(Ray r) {
 #ifdef HAS_TEXTURES
     m = resolve_texture(m, p);
 #endif
+#ifdef HAS_MAT_TEXTURED
+    // Image maps: the record's values at the hit, and the shading frame of its normal map
+    // (whose side tests below use the geometric normal: see textured_resolve.glsl).
+    bool shading_normal = m.kind == MAT_TEXTURED;
+    if (shading_normal) {
+      m = resolve_textured(m, s, h.id, p, h.n, n, -r.d, fr);
+      wo = to_local(fr, -r.d);
+    }
+#endif
     if (u_nee != 0 && have_lights() && !material_is_delta(m)) {
       LightSample ls;
       if (light_sample(p, u_light.xyz, ls)) {
         float pdf_b;
-        vec3 f = material_eval(m, wo, to_local(fr, ls.wi), entering, pdf_b);
+        vec3 wl = to_local(fr, ls.wi);
+        vec3 f = material_eval(m, wo, wl, entering, pdf_b);
+#ifdef HAS_MAT_TEXTURED
+        if (shading_normal && (dot(ls.wi, n) > 0.0) != (wl.z > 0.0)) f = vec3(0.0);
+#endif
         if (max3(f) > 0.0) {
           Hit sh = scene_intersect(Ray(offset_origin(p, n, ls.wi), ls.wi));
           if (sh.id == ls.shape) L += beta * f * ls.radiance * (power_heuristic(ls.pdf, pdf_b) / ls.pdf);
@@ -92,6 +105,9 @@ vec3 trace_path(Ray r) {
     prev_delta = bs.delta;
     prev_p = p;
     vec3 wi = normalize(from_local(fr, bs.wi));
+#ifdef HAS_MAT_TEXTURED
+    if (shading_normal && (dot(wi, n) > 0.0) != (bs.wi.z > 0.0)) break;  // would cross the geometric surface
+#endif
     r = Ray(offset_origin(p, n, wi), wi);
     if (bounce >= 3) {
       float q = min(max3(beta), 0.95);

@@ -1,5 +1,7 @@
 #include "render/packing.h"
 
+#include "render/image_maps.h"
+
 namespace pt {
 
 PackedScene pack_scene(const Scene& scene) {
@@ -41,6 +43,7 @@ PackedScene pack_scene(const Scene& scene) {
       p.materials.set(i, f::color2, m.color2);  // aliases the dielectric fields (see records.h)
       p.materials.set(i, f::scale, m.scale);
     }
+    if (m.kind == MaterialKind::Textured) pack_textured(p.materials, i, m);  // aliases too (see records.h)
   }
   return p;
 }

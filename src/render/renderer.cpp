@@ -4,12 +4,13 @@
 
 #include "render/camera.h"
 #include "render/environment.h"
+#include "render/image_maps.h"
 #include "render/packing.h"
 
 namespace pt {
 namespace {
 
-enum Unit { kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3, kStatsUnit = 4, kEnvUnit = 5, kEnvCdfUnit = 6 };
+enum Unit { kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3, kStatsUnit = 4, kEnvUnit = 5, kEnvCdfUnit = 6, kMapsUnit = 7, kUvUnit = 8 };
 
 Texture upload(const RecordBuffer& b) {
   const std::vector<float> t = b.texels();
@@ -44,6 +45,9 @@ Renderer::~Renderer() {
 
 void Renderer::set_scene(const Scene& scene) {
   const Features f = Features::of(scene);
+  // Image maps first: a scene beyond this GPU's texture limits throws before anything changes.
+  const bool textured = f.has(MaterialKind::Textured);
+  const MapArray maps = textured ? build_map_array(scene, TextureArray::max_size(), TextureArray::max_layers()) : MapArray{};
   auto& slot = cache_[f.key()];
   if (!slot) {
     auto c = std::make_unique<CachedProgram>();
@@ -57,6 +61,13 @@ void Renderer::set_scene(const Scene& scene) {
   shape_tex_ = upload(p.shapes);
   material_tex_ = upload(p.materials);
   light_tex_ = upload(p.lights);
+  if (textured) {
+    maps_ = TextureArray(maps.width, maps.height, maps.layers, maps.texels.data());
+    uv_tex_ = upload(pack_uvs(scene));
+  } else {
+    maps_ = TextureArray();
+    uv_tex_ = Texture();
+  }
   num_shapes_ = p.shapes.count();
   num_lights_ = p.lights.count();
   dot_weight_ = scene.dot_weight;
@@ -163,6 +174,12 @@ int Renderer::step() {
     p.set("u_env_rotation", env_rotation_);
     p.set("u_env_intensity", env_intensity_);
     p.set("u_env_integral", env_integral_);
+  }
+  if (maps_.id()) {
+    maps_.bind(kMapsUnit);
+    uv_tex_.bind(kUvUnit);
+    p.set("u_maps", int(kMapsUnit));
+    p.set("u_uv_data", int(kUvUnit));
   }
   accum_[cur_].bind(kAccumUnit);
   stats_[cur_].bind(kStatsUnit);
