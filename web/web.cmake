@@ -17,7 +17,8 @@ target_link_options(pathtracer_web PRIVATE
   -sALLOW_MEMORY_GROWTH=1
   -sEXPORTED_FUNCTIONS=${PT_EXPORTS_CSV}
   -sEXPORTED_RUNTIME_METHODS=UTF8ToString,stringToUTF8,lengthBytesUTF8
-  --preload-file "${CMAKE_SOURCE_DIR}/scenes@/scenes")
+  --preload-file "${CMAKE_SOURCE_DIR}/scenes@/scenes"
+  --preload-file "${CMAKE_SOURCE_DIR}/assets/textures@/assets/textures")  # image maps (scenes use ../../assets/textures)
 
 # Debian's emcc runs its JavaScript optimizer with node, which finds acorn and friends only
 # through NODE_PATH: set it for the link step so a plain `cmake --build` works.
@@ -26,7 +27,7 @@ if(EXISTS /usr/share/nodejs/acorn)
 endif()
 
 # Re-link when a scene changes (the .data package is written by the link step).
-file(GLOB_RECURSE PT_WEB_SCENES CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/scenes/*")
+file(GLOB_RECURSE PT_WEB_SCENES CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/scenes/*" "${CMAKE_SOURCE_DIR}/assets/textures/*")
 set_property(TARGET pathtracer_web APPEND PROPERTY LINK_DEPENDS ${PT_WEB_SCENES})
 
 # The HTML shell and styles are copied as they are, on every build.

@@ -13,8 +13,8 @@
 //  - camera paths carry radiance, for which the shading-normal BSDF needs no adjoint
 //    correction (Veach's correction applies to importance transport).
 // Where the map tilts n_s away from the viewer (wo below the shading horizon, which would
-// shade black), n_s is bent towards wo until cos(wo, n_s) = min(0.05, cos(wo, n_g)),
-// as renderers commonly do (Cycles' ensure_valid_reflection is the same idea). A flat map
+// shade black), n_s is bent towards wo (n_s + (c_min - cos(wo, n_s)) wo, normalised, with
+// c_min = min(0.05, cos(wo, n_g))) so that wo is above its horizon, as renderers commonly do (Cycles' ensure_valid_reflection is the same idea). A flat map
 // leaves the normal bit for bit the geometric one, so it renders exactly as no map.
 vec3 textured_normal(MaterialRec m, vec2 uv, vec3 n_out, vec4 tangent) {
   if (m.map_normal < 0) return n_out;
