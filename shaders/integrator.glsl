@@ -74,11 +74,41 @@ vec3 trace_path(Ray r) {
 #ifdef HAS_TEXTURES
     m = resolve_texture(m, p);
 #endif
+    // A shading normal (a mesh's interpolated vertex normals, a normal map) sets the BSDF's
+    // frame; the geometric normal n still decides sides: a direction on different sides
+    // of the two carries nothing, and rays leave off the geometric surface.
+    bool shading_normal = false;
+#ifdef HAS_SHAPE_MESH
+    g_prim = h.prim;
+    if (s.kind == SHAPE_MESH) {
+      vec3 ns;
+      vec2 uv_unused;
+      if (mesh_attributes(h, ns, uv_unused) && dot(ns, ns) > 0.0) {
+        ns = dot(ns, n) < 0.0 ? -ns : ns;  // onto the side the ray came from, as n
+        if (dot(ns, -r.d) > 0.0) {  // a normal facing away from the viewer is not used
+          fr = frame_from(ns);
+          wo = to_local(fr, -r.d);
+          shading_normal = true;
+        }
+      }
+    }
+#endif
+#ifdef HAS_MAT_TEXTURED
+    // Image maps: the record's values at the hit, and the shading frame of its normal map
+    // (whose side tests below use the geometric normal: see textured_resolve.glsl).
+    if (m.kind == MAT_TEXTURED) {
+      shading_normal = true;
+      m = resolve_textured(m, s, h.id, p, h.n, n, -r.d, fr);
+      wo = to_local(fr, -r.d);
+    }
+#endif
     if (u_nee != 0 && have_lights() && !material_is_delta(m)) {
       LightSample ls;
       if (light_sample(p, u_light.xyz, ls)) {
         float pdf_b;
-        vec3 f = material_eval(m, wo, to_local(fr, ls.wi), entering, pdf_b);
+        vec3 wl = to_local(fr, ls.wi);
+        vec3 f = material_eval(m, wo, wl, entering, pdf_b);
+        if (shading_normal && (dot(ls.wi, n) > 0.0) != (wl.z > 0.0)) f = vec3(0.0);
         if (max3(f) > 0.0) {
           // Any hit short of the light's surface blocks it; the light itself is skipped, so
           // its own surface never shadows (the distance keeps a relative margin of 1e-4).
@@ -94,6 +124,7 @@ vec3 trace_path(Ray r) {
     prev_delta = bs.delta;
     prev_p = p;
     vec3 wi = normalize(from_local(fr, bs.wi));
+    if (shading_normal && (dot(wi, n) > 0.0) != (bs.wi.z > 0.0)) break;  // would cross the geometric surface
     r = Ray(offset_origin(p, n, wi), wi);
     if (bounce >= 3) {
       float q = min(max3(beta), 0.95);

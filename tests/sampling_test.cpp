@@ -23,7 +23,7 @@ namespace {
 
 constexpr int kSamples = 1000000;
 constexpr int kCosBins = 40, kPhiBins = 80, kSub = 5;
-constexpr int kChi2Tests = 25;  // every direction_chi2 call below
+constexpr int kChi2Tests = 29;  // every direction_chi2 call below
 constexpr double kPi = 3.14159265358979323846;
 
 struct DirectionCase {
@@ -177,6 +177,25 @@ TEST_CASE("chi-square: Phong specular lobe", "[gpu][sampling]") {
       const std::string name = "phong n=" + std::to_string(int(n)) + " cos_o=" + std::to_string(c);
       CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
     }
+}
+
+TEST_CASE("chi-square: Textured, a Lambert and Phong mixture", "[gpu][sampling][textured]") {
+  // The record as resolve_textured leaves it: tint = (1 - s) rho, color2 = s.
+  struct C {
+    float diffuse, specular, n;
+    double cos_o;
+  };
+  for (const C& c : {C{0.6f, 0.4f, 30.0f, 0.8}, C{0.9f, 0.1f, 8.0f, 0.3}, C{0.2f, 0.8f, 60.0f, 1e-3}, C{0.0f, 0.5f, 20.0f, 0.5}}) {
+    char setup[400];
+    std::snprintf(setup, sizeof setup,
+                  "MaterialRec make_material() {\n  MaterialRec m;\n  m.kind = MAT_TEXTURED; m.tint = vec3(%.3f); m.color2 = vec3(%.3f);"
+                  " m.exponent = %.1f;\n  return m;\n}\n",
+                  double(c.diffuse), double(c.specular), double(c.n));
+    DirectionCase dc{std::string(setup) + incident(c.cos_o) + kBsdfPdfHelper, kBsdfSample, kBsdfDensity};
+    const std::string name = "textured d=" + std::to_string(c.diffuse).substr(0, 3) + " s=" + std::to_string(c.specular).substr(0, 3) +
+                             " cos_o=" + std::to_string(c.cos_o);
+    CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+  }
 }
 
 TEST_CASE("chi-square: light sampling of spheres, boxes and triangles", "[gpu][sampling]") {

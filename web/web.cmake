@@ -17,8 +17,9 @@ target_link_options(pathtracer_web PRIVATE
   -sALLOW_MEMORY_GROWTH=1
   -sEXPORTED_FUNCTIONS=${PT_EXPORTS_CSV}
   -sEXPORTED_RUNTIME_METHODS=UTF8ToString,stringToUTF8,lengthBytesUTF8
-  --preload-file "${CMAKE_SOURCE_DIR}/scenes@/scenes"
-  --preload-file "${CMAKE_SOURCE_DIR}/assets@/assets")
+  # SHELL: keeps the repeated --preload-file (CMake de-duplicates plain options).
+  "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/scenes@/scenes"
+  "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/assets@/assets")  # meshes, image maps, environments
 
 # Debian's emcc runs its JavaScript optimizer with node, which finds acorn and friends only
 # through NODE_PATH: set it for the link step so a plain `cmake --build` works.

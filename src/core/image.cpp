@@ -1,5 +1,6 @@
 #include "core/image.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -13,6 +14,7 @@
 #define STB_IMAGE_STATIC
 #define STBI_ONLY_HDR
 #define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
@@ -75,6 +77,49 @@ bool read_hdr(const std::string& path, int* w, int* h, std::vector<float>* rgba)
   for (int y = 0; y < *h; ++y)
     for (int i = 0; i < *w * 4; ++i) (*rgba)[size_t(*h - 1 - y) * *w * 4 + i] = p[size_t(y) * *w * 4 + i];
   stbi_image_free(p);
+  return true;
+}
+
+bool read_image(const std::string& path, LoadedImage* out, std::string* error) {
+  const auto bytes = read_file(path);
+  if (!bytes) {
+    *error = "no such file, or it cannot be opened";
+    return false;
+  }
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes->data());
+  const int size = int(bytes->size());
+  int w = 0, h = 0, n = 0;
+  std::vector<float> top_down;
+  // 8- and 16-bit files keep their integer code values (v / max) so that the caller
+  // decides what they encode (sRGB colour or a unit vector); HDR files are linear floats.
+  if (stbi_is_hdr_from_memory(data, size)) {
+    float* p = stbi_loadf_from_memory(data, size, &w, &h, &n, 4);
+    if (p) top_down.assign(p, p + size_t(w) * size_t(h) * 4);
+    stbi_image_free(p);
+    out->bits = 0;
+  } else if (stbi_is_16_bit_from_memory(data, size)) {
+    stbi_us* p = stbi_load_16_from_memory(data, size, &w, &h, &n, 4);
+    if (p)
+      for (size_t i = 0; i < size_t(w) * size_t(h) * 4; ++i) top_down.push_back(float(p[i]) / 65535.0f);
+    stbi_image_free(p);
+    out->bits = 16;
+  } else {
+    stbi_uc* p = stbi_load_from_memory(data, size, &w, &h, &n, 4);
+    if (p)
+      for (size_t i = 0; i < size_t(w) * size_t(h) * 4; ++i) top_down.push_back(float(p[i]) / 255.0f);
+    stbi_image_free(p);
+    out->bits = 8;
+  }
+  if (top_down.empty() || w <= 0 || h <= 0) {
+    const char* why = stbi_failure_reason();
+    *error = std::string("not a PNG, JPEG or HDR image stb_image can decode (") + (why ? why : "unknown error") + ")";
+    return false;
+  }
+  out->width = w;
+  out->height = h;
+  out->rgba.resize(top_down.size());
+  const size_t row = size_t(w) * 4;
+  for (int y = 0; y < h; ++y) std::copy_n(&top_down[size_t(h - 1 - y) * row], row, &out->rgba[size_t(y) * row]);
   return true;
 }
 

@@ -17,6 +17,15 @@ bool write_png(const std::string& path, int w, int h, const std::vector<uint8_t>
 bool write_hdr(const std::string& path, int w, int h, const std::vector<float>& rgba);
 // Reads a Radiance .hdr (or anything stb_image reads as float) into RGBA, rows bottom to top.
 bool read_hdr(const std::string& path, int* w, int* h, std::vector<float>* rgba);
+// Any image stb_image reads (PNG, JPEG, Radiance HDR) as RGBA float, rows bottom to top.
+// bits = 8 or 16: integer code values divided by 255 or 65535 (not decoded: the caller
+// knows whether they are sRGB colours or vectors); bits = 0: linear floats (HDR).
+// On failure, *error says why (missing file, or the decoder's reason).
+struct LoadedImage {
+  int width = 0, height = 0, bits = 8;
+  std::vector<float> rgba;
+};
+bool read_image(const std::string& path, LoadedImage* out, std::string* error);
 // Portable float map (little-endian RGB float32): lossless linear images, used for
 // benchmark references where RGBE's 8-bit mantissa would put a floor under the error.
 bool write_pfm(const std::string& path, int w, int h, const std::vector<float>& rgba);

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "render/image_maps.h"
+
 #include "core/error.h"
 
 namespace pt {
@@ -27,6 +29,7 @@ void pack_materials(const Scene& scene, PackedScene& p) {
       p.materials.set(i, f::color2, m.color2);  // aliases the dielectric fields (see records.h)
       p.materials.set(i, f::scale, m.scale);
     }
+    if (m.kind == MaterialKind::Textured) pack_textured(p.materials, i, m);  // aliases too (see records.h)
   }
 }
 

@@ -36,6 +36,11 @@ const RecordLayout& vertex_layout() {
   static const RecordLayout l{"vertex", kTexels, {PT_VERTEX_RECORD(PT_FIELD_LIST)}};
   return l;
 }
+const RecordLayout& uv_layout() {
+  using namespace uv_rec;
+  static const RecordLayout l{"uv", kTexels, {PT_UV_RECORD(PT_FIELD_LIST)}};
+  return l;
+}
 #undef PT_FIELD_LIST
 
 std::string glsl_record(const RecordLayout& l) {
@@ -78,6 +83,13 @@ void RecordBuffer::set(int rec, const Field& f, glm::vec3 v) {
   p[0] = v.x;
   p[1] = v.y;
   p[2] = v.z;
+}
+
+void RecordBuffer::set(int rec, const Field& f, glm::vec2 v) {
+  assert(f.width == 2 && rec < count_);
+  float* p = &data_[(size_t(rec) * texels_ + f.texel) * 4 + f.comp];
+  p[0] = v.x;
+  p[1] = v.y;
 }
 
 int RecordBuffer::rows() const {

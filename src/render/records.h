@@ -22,10 +22,19 @@
   F(vec3, tint, 1, 0) F(float, ior_n, 1, 3)                                 \
   F(vec3, emission, 2, 0) F(float, ior_k, 2, 3)                             \
   F(float, eta_outer, 3, 0) F(float, eta_inner, 3, 1) F(float, exponent, 3, 2) F(int, child_a, 3, 3) \
-  F(vec3, color2, 3, 0) F(float, scale, 0, 1)
+  F(vec3, color2, 3, 0) F(float, scale, 0, 1)                              \
+  F(int, map_diffuse, 0, 3) F(int, map_specular, 3, 3) F(int, map_normal, 1, 3) \
+  F(vec2, uv_scale, 3, 0) F(vec2, uv_offset, 0, 1)
 
 // Fields may alias one slot when no kind uses both: procedural textures keep their second
-// colour in eta_outer/eta_inner/exponent and their scale in roughness.
+// colour in eta_outer/eta_inner/exponent and their scale in roughness; Textured keeps its
+// map layers (-1: none) in child_b/child_a/ior_n and its uv transform in eta_outer/eta_inner
+// and roughness/sampling (its Phong exponent is `exponent`).
+
+// Texture coordinates of a Triangle's vertices, one record per shape (indexed like the
+// shape records), packed and bound only for scenes with a Textured material.
+#define PT_UV_RECORD(F) \
+  F(vec2, uv0, 0, 0) F(vec2, uv1, 0, 2) F(vec2, uv2, 1, 0)
 
 // BVH node (accel/bvh.h): bounds; interior: first = index of the first of its two
 // adjacent children, count = 0; leaf: first = its first primitive, count = how many.
@@ -103,6 +112,10 @@ namespace light_rec {
 inline constexpr int kTexels = 1;
 PT_LIGHT_RECORD(PT_FIELD_CONST)
 }
+namespace uv_rec {
+inline constexpr int kTexels = 2;
+PT_UV_RECORD(PT_FIELD_CONST)
+}
 
 const RecordLayout& shape_layout();
 const RecordLayout& material_layout();
@@ -110,6 +123,7 @@ const RecordLayout& light_layout();
 const RecordLayout& node_layout();
 const RecordLayout& prim_layout();
 const RecordLayout& vertex_layout();
+const RecordLayout& uv_layout();
 
 // GLSL for one layout: the struct, the sampler uniform and the loader function.
 std::string glsl_record(const RecordLayout& layout);
@@ -122,6 +136,7 @@ class RecordBuffer {
   void reserve(int records) { data_.reserve(size_t(records) * texels_ * 4); }
   void set(int rec, const Field& f, float v);
   void set(int rec, const Field& f, glm::vec3 v);
+  void set(int rec, const Field& f, glm::vec2 v);
   void set(int rec, const Field& f, int v) { set(rec, f, float(v)); }
   int count() const { return count_; }
   int rows() const;  // at least 1

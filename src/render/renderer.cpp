@@ -4,6 +4,7 @@
 
 #include "render/camera.h"
 #include "render/environment.h"
+#include "render/image_maps.h"
 #include "render/packing.h"
 
 namespace pt {
@@ -11,7 +12,7 @@ namespace {
 
 enum Unit {
   kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3, kStatsUnit = 4, kEnvUnit = 5, kEnvCdfUnit = 6,
-  kNodeUnit = 7, kPrimUnit = 8, kVertexUnit = 9
+  kNodeUnit = 7, kPrimUnit = 8, kVertexUnit = 9, kMapsUnit = 10, kUvUnit = 11
 };
 
 Texture upload(const RecordBuffer& b, const char* what) {
@@ -52,6 +53,9 @@ Renderer::~Renderer() {
 
 void Renderer::set_scene(const Scene& scene) {
   const Features f = Features::of(scene);
+  // Image maps first: a scene beyond this GPU's texture limits throws before anything changes.
+  const bool textured = f.has(MaterialKind::Textured);
+  const MapArray maps = textured ? build_map_array(scene, TextureArray::max_size(), TextureArray::max_layers()) : MapArray{};
   auto& slot = cache_[f.key()];
   if (!slot) {
     auto c = std::make_unique<CachedProgram>();
@@ -68,6 +72,13 @@ void Renderer::set_scene(const Scene& scene) {
   node_tex_ = upload(p.nodes, "BVH nodes");
   prim_tex_ = upload(p.prims, "primitives");
   vertex_tex_ = upload(p.vertices, "mesh vertices");
+  if (textured) {
+    maps_ = TextureArray(maps.width, maps.height, maps.layers, maps.texels.data());
+    uv_tex_ = upload(pack_uvs(scene), "uv records");
+  } else {
+    maps_ = TextureArray();
+    uv_tex_ = Texture();
+  }
   num_shapes_ = p.shapes.count();
   num_lights_ = p.lights.count();
   num_unbounded_ = p.unbounded;
@@ -182,6 +193,12 @@ int Renderer::step() {
     p.set("u_env_rotation", env_rotation_);
     p.set("u_env_intensity", env_intensity_);
     p.set("u_env_integral", env_integral_);
+  }
+  if (maps_.id()) {
+    maps_.bind(kMapsUnit);
+    uv_tex_.bind(kUvUnit);
+    p.set("u_maps", int(kMapsUnit));
+    p.set("u_uv_data", int(kUvUnit));
   }
   accum_[cur_].bind(kAccumUnit);
   stats_[cur_].bind(kStatsUnit);

@@ -9,6 +9,7 @@
 
 #include "gpu/program.h"
 #include "gpu/texture.h"
+#include "gpu/texture_array.h"
 #include "render/tonemap.h"
 #include "scene/scene.h"
 #include "shadergen/shadergen.h"
@@ -98,6 +99,8 @@ class Renderer {
   glm::ivec2 env_size_{0};
   float env_rotation_ = 0.0f, env_intensity_ = 1.0f, env_integral_ = 0.0f;
   std::shared_ptr<const EnvImage> env_source_;  // the image the textures hold
+  TextureArray maps_;  // Textured scenes: the image maps (render/image_maps.h)
+  Texture uv_tex_;     // and the Triangle uv records
   Texture accum_[2];
   Texture stats_[2];
   Framebuffer fbo_[2];

@@ -37,7 +37,8 @@
   X(WorleyTexture, worley_texture, "WorleyTexture")   \
   X(PerlinTexture, perlin_texture, "PerlinTexture")   \
   X(FormulaTexture, formula_texture, "FormulaTexture") \
-  X(FormulaPowTexture, formula_pow_texture, "FormulaPowTexture")
+  X(FormulaPowTexture, formula_pow_texture, "FormulaPowTexture") \
+  X(Textured, textured, "Textured")
 
 namespace pt {
 

@@ -164,11 +164,18 @@ std::vector<GltfPart> load_gltf(const std::string& path) {
     throw InputError(path, 0, err.empty() ? "cannot read the glTF file" : err);
   }
   const Reader r(path, model);
-  std::map<std::pair<int, int>, std::shared_ptr<const MeshData>> cache;
+  // Keyed by the accessors a primitive reads: primitives (or meshes) that differ only in
+  // material share one MeshData.
+  std::map<std::vector<int>, std::shared_ptr<const MeshData>> cache;
   auto primitive = [&](int mesh, int prim) -> std::shared_ptr<const MeshData> {
-    auto& slot = cache[{mesh, prim}];
-    if (slot) return slot;
     const tinygltf::Primitive& p = model.meshes[size_t(mesh)].primitives[size_t(prim)];
+    std::vector<int> key{p.mode, p.indices};
+    for (const char* a : {"POSITION", "NORMAL", "TEXCOORD_0"}) {
+      const auto it = p.attributes.find(a);
+      key.push_back(it == p.attributes.end() ? -1 : it->second);
+    }
+    auto& slot = cache[key];
+    if (slot) return slot;
     if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) return nullptr;  // points and lines: nothing to render
     auto d = std::make_shared<MeshData>();
     const auto pos = p.attributes.find("POSITION");

@@ -77,8 +77,9 @@ TEST_CASE("malformed JSON meshes name the file and line", "[loader][mesh]") {
 
 TEST_CASE("a Wavefront OBJ mesh loads (quads triangulated); bad ones name the file", "[loader][mesh]") {
   const Scene s = cube_scene(true, "../assets/cube.obj");
-  int triangles = 0;
-  for (const Shape& sh : s.shapes) triangles += sh.kind == ShapeKind::Triangle;
+  size_t triangles = 0;
+  for (const Shape& sh : s.shapes)
+    if (sh.kind == ShapeKind::Mesh) triangles += s.meshes.at(size_t(sh.mesh))->triangles.size();
   CHECK(triangles == 12);
   const std::string dir = std::string(PT_BINARY_DIR) + "/mesh-test";
   std::filesystem::create_directories(dir);
@@ -94,7 +95,7 @@ TEST_CASE("a Wavefront OBJ mesh loads (quads triangulated); bad ones name the fi
     load_scene_text("<SceneLevel><Camera position=\"0 0 5\"/><Objects>\n<Mesh src=\"m.ply\"><Diffuse/></Mesh></Objects></SceneLevel>", "x.xml");
     FAIL("loaded");
   } catch (const InputError& e) {
-    CHECK(std::string(e.what()) == "x.xml:2: <Mesh>: 'src' must be a .json (the seed's format) or .obj mesh");
+    CHECK(std::string(e.what()) == "x.xml:2: <Mesh>: 'src' must be a .json (the seed's format), .obj, .gltf or .glb mesh");
   }
 }
 

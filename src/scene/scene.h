@@ -26,6 +26,9 @@ struct Material {
   int child_a = -1, child_b = -1;  // FresnelComposite: reflective and transmissive children
   glm::vec3 color2{0.0f};     // procedural textures: the second colour (the first is tint)
   float scale = 10.0f;        // procedural textures: feature size in scene units
+  // Textured: indices into Scene::images (-1: none) and the uv transform uv * scale + offset.
+  int diffuse_map = -1, specular_map = -1, normal_map = -1;
+  glm::vec2 uv_scale{1.0f}, uv_offset{0.0f};
   int line = 0;               // scene-file line, for messages
 };
 
@@ -40,6 +43,7 @@ struct Shape {
   glm::vec3 velocity{0.0f};  // Sphere only: motion blur
   int mesh = -1;
   glm::mat4 transform{1.0f};
+  glm::vec2 uv[3] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}};  // Triangle only: uv of v0, v1, v2
   int material = 0;
   int light = -1;  // index into Scene::lights when this shape is a light
   bool dynamic = false;
@@ -73,6 +77,17 @@ struct EnvImage {
   std::vector<float> rgba;
 };
 
+// An image map of a <Textured> material, decoded on load: RGBA float, rows from v = 0
+// (the image's bottom row) up. Colour maps (diffuse, specular) hold linear values (8/16-bit
+// files are sRGB-decoded); normal maps hold tangent-space vector components in [-1, 1].
+struct ImageMap {
+  std::string path;     // as resolved from the scene file
+  bool normal = false;  // decoded as a normal map
+  int width = 0, height = 0;
+  std::vector<float> rgba;
+  int line = 0;         // the scene line that first referenced it, for messages
+};
+
 struct Environment {
   glm::vec3 color{0.5f};   // constant radiance seen by rays that leave the scene
   std::string map_path;    // or an equirectangular HDR map (then `color` is unused)
@@ -91,6 +106,7 @@ struct Scene {
   std::vector<Material> materials;
   // Mesh geometry, shared by instances (a scene copy shares it too: it is never edited).
   std::vector<std::shared_ptr<const MeshData>> meshes;
+  std::vector<std::shared_ptr<const ImageMap>> images;  // Textured maps, each file once per decoding
 };
 
 // After editing lights[i], writes it into its sphere and emission (the data the

@@ -20,6 +20,7 @@
 #include "scene/mesh_gltf.h"
 #include "scene/mesh_json.h"
 #include "scene/mesh_obj.h"
+#include "scene/textured_loader.h"
 #include "scene/xml_attrs.h"
 
 namespace pt {
@@ -56,6 +57,10 @@ void parse_triangle(XmlAttrs& a, Shape& s) {
   s.a = a.vec3("v0");
   s.b = a.vec3("v1");
   s.c = a.vec3("v2");
+  // Extension: texture coordinates of the three vertices (used by <Textured>).
+  const char* uv_names[3] = {"uv0", "uv1", "uv2"};
+  for (int i = 0; i < 3; ++i)
+    if (a.has(uv_names[i])) s.uv[i] = a.vec2(uv_names[i]);
   if (!(glm::length(glm::cross(s.b - s.a, s.c - s.a)) > 0.0f)) a.fail("triangle has zero area");
 }
 
@@ -81,6 +86,7 @@ void parse_transmit(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
 void parse_smooth_dielectric(Loader&, XmlAttrs& a, const XMLElement*, Material& m);
 void parse_emit(Loader&, XmlAttrs& a, const XMLElement* e, Material& m);
 void parse_fresnel_composite(Loader& l, XmlAttrs& a, const XMLElement* e, Material& m);
+void parse_textured(Loader& l, XmlAttrs& a, const XMLElement* e, Material& m);
 // Procedural (solid) textures: <ChessTexture color1=".." color2=".." scale=".."/> and the
 // same attributes for Worley, Perlin, Formula and FormulaPow; a Lambertian surface whose
 // albedo varies in space (3D, so no uv mapping is needed).
@@ -476,6 +482,10 @@ void parse_fresnel_composite(Loader& l, XmlAttrs& a, const XMLElement* e, Materi
   m.child_a = l.material(first, m.tint);  // an Attenuate around the composite tints both
   m.child_b = l.material(second, m.tint);
 }
+
+// <Textured diffuse="wood.png" specular=".." normal=".." n="50" uvScale="su sv"
+// uvOffset="ou ov"/>: see scene/textured_loader.h.
+void parse_textured(Loader& l, XmlAttrs& a, const XMLElement*, Material& m) { parse_textured_attrs(a, l.scene, m); }
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include "render/records.h"
 #include "render/sobol.h"
 #include "shadergen/embedded.h"
+#include "shadergen/textured_gen.h"
 
 namespace pt {
 
@@ -26,6 +27,8 @@ Features Features::of(const Scene& scene) {
   for (const Material& m : scene.materials) {
     f.materials |= 1u << int(m.kind);
     if (is_procedural_texture(m.kind)) f.materials |= 1u << int(MaterialKind::Diffuse);  // it shades as Diffuse
+    if (m.kind == MaterialKind::Textured)  // its lobes are Diffuse's and PhongSpecular's
+      f.materials |= 1u << int(MaterialKind::Diffuse) | 1u << int(MaterialKind::PhongSpecular);
   }
   for (const Shape& s : scene.shapes)
     if (is_sampled_light(scene, s)) f.lights |= 1u << int(s.kind);
@@ -168,6 +171,7 @@ std::string generate_prelude(const Features& features) {
   g += glsl_record(shape_layout()) + glsl_record(material_layout()) + glsl_record(light_layout());
   g += glsl_record(node_layout()) + glsl_record(prim_layout());
   if (f.has(ShapeKind::Mesh)) g += glsl_record(vertex_layout());
+  if (f.has(MaterialKind::Textured)) g += "precision highp sampler2DArray;\n" + glsl_record(uv_layout());
   g += glsl_sobol_table();
   g += "#include \"rng.glsl\"\n#include \"sampler.glsl\"\n#include \"sampling.glsl\"\n";
   for (int i = 0; i < kNumShapeKinds; ++i)
@@ -212,6 +216,7 @@ std::string generate_prelude(const Features& features) {
            k.substr(0, k.size() - std::string("_texture").size()) + "_pattern(p, m.scale));\n";
   }
   if (!tex.empty()) g += "#define HAS_TEXTURES 1\nMaterialRec resolve_texture(MaterialRec m, vec3 p) {\n" + tex + "  return m;\n}\n";
+  if (f.has(MaterialKind::Textured)) g += glsl_textured_support(f);  // image maps: uv of the shapes present
   // Light sampling over the emitter kinds present (solid-angle densities).
   std::string lsmp = "bool light_sample_shape(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {\n";
   std::string lpdf = "float light_pdf_shape(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {\n";

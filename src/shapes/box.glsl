@@ -74,3 +74,23 @@ float pdf_light_box(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
   return total > 0.0 && cos_l > 0.0 ? t * t / (cos_l * total) : 0.0;
 }
 #endif
+
+#ifdef HAS_MAT_TEXTURED
+// Image maps: every face spans [0, 1]^2 (three.js's BoxGeometry orientation). On the
+// four side faces v runs up +y; on the top and bottom faces u runs along +x. u runs along
+// t = unit dp/du: -z on +x, +z on -x, +x on +y, -y and +z, -x on -z, so that
+// (t, n x t, n) is right-handed with n outward and n x t = dp/dv.
+vec4 tangent_box(ShapeRec s, vec3 p, vec3 n) {
+  vec3 a = abs(n);
+  if (a.x > 0.5) return vec4(0.0, 0.0, -n.x, 1.0);
+  if (a.y > 0.5) return vec4(1.0, 0.0, 0.0, 1.0);
+  return vec4(n.z, 0.0, 0.0, 1.0);
+}
+vec2 uv_box(ShapeRec s, vec3 p, vec3 n) {
+  vec3 f = (p - s.a) / max(s.b - s.a, vec3(1e-30));  // p in [0, 1]^3
+  vec3 a = abs(n);
+  if (a.x > 0.5) return vec2(n.x > 0.0 ? 1.0 - f.z : f.z, f.y);
+  if (a.y > 0.5) return vec2(f.x, n.y > 0.0 ? 1.0 - f.z : f.z);
+  return vec2(n.z > 0.0 ? f.x : 1.0 - f.x, f.y);
+}
+#endif

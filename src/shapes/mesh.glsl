@@ -12,6 +12,8 @@ vec3 mesh_barycentrics(PrimRec t, vec3 p) {
   return vec3(1.0 - b1 - b2, b1, b2);
 }
 
+int g_prim;  // the primitive of the hit being shaded (set by the integrator)
+
 // The interpolated shading normal (unit; vec3(0) when the mesh has no normals) and uv of
 // a hit on a mesh triangle; false when the mesh has no vertex attributes.
 bool mesh_attributes(Hit h, out vec3 ns, out vec2 uv) {
@@ -26,3 +28,33 @@ bool mesh_attributes(Hit h, out vec3 ns, out vec2 uv) {
   uv = b.x * vec2(a.u, a.v) + b.y * vec2(c.u, c.v) + b.z * vec2(d.u, d.v);
   return true;
 }
+
+#ifdef HAS_MAT_TEXTURED
+// Image maps on meshes: the vertex uv interpolated at the hit, and the tangent along
+// dp/du from the triangle's uv parameterisation (w: the handedness of dp/dv).
+vec2 uv_mesh(ShapeRec s, int prim, vec3 p, vec3 n) {
+  Hit h = no_hit();
+  h.prim = prim;
+  h.p = p;
+  vec3 ns;
+  vec2 uv;
+  mesh_attributes(h, ns, uv);
+  return uv;
+}
+
+vec4 tangent_mesh(ShapeRec s, int prim, vec3 p, vec3 n) {
+  PrimRec t = load_prim(prim);
+  vec4 fallback = vec4(frame_from(n).t, 1.0);
+  if (t.attr.x < 0.0) return fallback;
+  VertexRec a = load_vertex(int(t.attr.x)), b = load_vertex(int(t.attr.y)), c = load_vertex(int(t.attr.z));
+  vec2 d1 = vec2(b.u - a.u, b.v - a.v), d2 = vec2(c.u - a.u, c.v - a.v);
+  float det = d1.x * d2.y - d1.y * d2.x;
+  if (abs(det) < 1e-20) return fallback;
+  vec3 e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
+  vec3 dpdu = (e1 * d2.y - e2 * d1.y) / det, dpdv = (e2 * d1.x - e1 * d2.x) / det;
+  vec3 tu = dpdu - n * dot(n, dpdu);
+  if (!(dot(tu, tu) > 0.0)) return fallback;
+  tu = normalize(tu);
+  return vec4(tu, dot(cross(n, tu), dpdv) < 0.0 ? -1.0 : 1.0);
+}
+#endif

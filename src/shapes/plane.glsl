@@ -11,3 +11,14 @@ void intersect_plane(ShapeRec s, int id, Ray r, inout Hit h) {
   h.p = r.o + t * r.d;
   h.p -= s.a * (dot(s.a, h.p) - s.radius);
 }
+
+#ifdef HAS_MAT_TEXTURED
+// Image maps: planar in the plane's tangent frame frame_from(normal), in scene units
+// (the material's uvScale sets the tile size): uv = (dot(p, t), dot(p, b)). For the floor
+// (normal +y) t = +x and b = -z: u = x, v = -z.
+vec2 uv_plane(ShapeRec s, vec3 p, vec3 n) {
+  Frame f = frame_from(s.a);
+  return vec2(dot(p, f.t), dot(p, f.b));
+}
+vec4 tangent_plane(ShapeRec s, vec3 p, vec3 n) { return vec4(frame_from(s.a).t, 1.0); }
+#endif

@@ -61,3 +61,21 @@ float pdf_light_sphere(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
   return omc > 0.0 ? 1.0 / (TWO_PI * omc) : 0.0;
 }
 #endif
+
+#ifdef HAS_MAT_TEXTURED
+// Image maps: longitude and latitude of the outward normal n (the direction from the
+// centre, so a moving sphere carries its texture): u = phi / (2 pi) with
+// phi = atan(-n.z, n.x), v = 1 - theta / pi with theta = acos(n.y) (computed as
+// atan(|n.xz|, n.y)), so v = 1 at the +y pole and an image stands upright. The tangent
+// t = unit dp/du = (-sin phi, 0, -cos phi) makes (t, n x t, n) right-handed with n x t
+// pointing north (dp/dv); at the poles phi = 0 (atan(0, 0) is undefined in GLSL).
+vec2 uv_sphere(ShapeRec s, vec3 p, vec3 n) {
+  float phi = n.x == 0.0 && n.z == 0.0 ? 0.0 : atan(-n.z, n.x);
+  return vec2(fract(phi / TWO_PI), 1.0 - atan(length(n.xz), n.y) / PI);  // atan: accurate near the poles too
+}
+vec4 tangent_sphere(ShapeRec s, vec3 p, vec3 n) {
+  vec3 t = vec3(n.z, 0.0, -n.x);
+  float l = length(t);
+  return vec4(l > 0.0 ? t / l : vec3(0.0, 0.0, -1.0), 1.0);
+}
+#endif

@@ -92,3 +92,32 @@ float pdf_light_triangle(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
   return cos_l > 0.0 ? t * t / (cos_l * area) : 0.0;
 }
 #endif
+
+#ifdef HAS_MAT_TEXTURED
+// Image maps: the vertices' uv (XML uv0, uv1, uv2; default (0,0), (1,0), (0,1)) in a
+// UvRec (render/records.h), interpolated with the barycentric weights of p.
+// barycentric_triangle is the hook for meshes: a mesh hit carries its weights and skips it.
+vec3 barycentric_triangle(ShapeRec s, vec3 p) {
+  vec3 e1 = s.b - s.a, e2 = s.c - s.a, q = p - s.a;
+  float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2), d20 = dot(q, e1), d21 = dot(q, e2);
+  float den = d00 * d11 - d01 * d01;
+  float v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
+  return vec3(1.0 - v - w, v, w);
+}
+vec2 uv_triangle(ShapeRec s, UvRec t, vec3 p, vec3 n) {
+  vec3 b = barycentric_triangle(s, p);
+  return b.x * t.uv0 + b.y * t.uv1 + b.z * t.uv2;
+}
+// dp/du of the affine uv parameterisation: e1 = dp/du du1 + dp/dv dv1 (and e2), solved
+// for dp/du, made orthogonal to n. w = -1 when the uv map is mirrored (then dp/dv points
+// along -(n x t)); a degenerate uv map gives any tangent.
+vec4 tangent_triangle(ShapeRec s, UvRec t, vec3 p, vec3 n) {
+  vec3 e1 = s.b - s.a, e2 = s.c - s.a;
+  vec2 d1 = t.uv1 - t.uv0, d2 = t.uv2 - t.uv0;
+  float det = d1.x * d2.y - d1.y * d2.x;
+  vec3 dpdu = (e1 * d2.y - e2 * d1.y) * (det < 0.0 ? -1.0 : 1.0);
+  dpdu -= n * dot(n, dpdu);
+  float l = length(dpdu);
+  return det != 0.0 && l > 0.0 ? vec4(dpdu / l, det < 0.0 ? -1.0 : 1.0) : vec4(frame_from(n).t, 1.0);
+}
+#endif

@@ -1,0 +1,70 @@
+#include "scene/textured_loader.h"
+
+#include <cmath>
+
+#include "core/file_io.h"
+
+namespace pt {
+
+float srgb_to_linear(float v) {
+  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+ImageMap decode_image_map(const LoadedImage& img, bool normal) {
+  ImageMap m;
+  m.normal = normal;
+  m.width = img.width;
+  m.height = img.height;
+  m.rgba = img.rgba;
+  // Integer codes: 0 .. M with M = 255 or 65535; the middle code (M + 1) / 2 maps to 0 and
+  // M to 1 (a flat map of (128, 128, 255) is exactly (0, 0, 1)).
+  const float max_code = img.bits == 16 ? 65535.0f : 255.0f;
+  for (size_t i = 0; i < m.rgba.size(); ++i) {
+    float& v = m.rgba[i];
+    if (i % 4 == 3) {
+      v = 1.0f;  // alpha is not used
+    } else if (normal) {
+      v = img.bits == 0 ? 2.0f * v - 1.0f
+                        : std::max(-1.0f, (std::round(v * max_code) - 0.5f * (max_code + 1.0f)) / (0.5f * (max_code - 1.0f)));
+    } else if (img.bits != 0) {
+      v = srgb_to_linear(v);
+    }
+  }
+  return m;
+}
+
+namespace {
+
+int load_map(XmlAttrs& a, Scene& scene, const char* attr, bool normal) {
+  if (!a.has(attr)) return -1;
+  const std::string given = a.text(attr);
+  const std::string path = !given.empty() && given[0] == '/' ? given : directory_of(a.file()) + "/" + given;
+  for (size_t i = 0; i < scene.images.size(); ++i)
+    if (scene.images[i]->path == path && scene.images[i]->normal == normal) return int(i);
+  LoadedImage img;
+  std::string why;
+  if (!read_image(path, &img, &why)) a.fail("cannot read '" + given + "': " + why);
+  auto m = std::make_shared<ImageMap>(decode_image_map(img, normal));
+  m->path = path;
+  m->line = a.line();
+  for (float v : m->rgba)
+    if (!std::isfinite(v) || (!normal && (v < 0.0f || v > 1.0f)))
+      a.fail("'" + given + "' has values outside [0, 1]: a reflectance map cannot add energy");
+  scene.images.push_back(std::move(m));
+  return int(scene.images.size()) - 1;
+}
+
+}  // namespace
+
+void parse_textured_attrs(XmlAttrs& a, Scene& scene, Material& m) {
+  m.diffuse_map = load_map(a, scene, "diffuse", false);
+  m.specular_map = load_map(a, scene, "specular", false);
+  m.normal_map = load_map(a, scene, "normal", true);
+  m.exponent = a.number("n", 50.0f);
+  if (!(m.exponent > 0.0f) || m.exponent > 1e5f) a.fail("'n' must be in (0, 100000]");
+  m.uv_scale = a.has("uvScale") ? a.vec2("uvScale") : glm::vec2(1.0f);
+  m.uv_offset = a.has("uvOffset") ? a.vec2("uvOffset") : glm::vec2(0.0f);
+  if (m.uv_scale.x == 0.0f || m.uv_scale.y == 0.0f) a.fail("'uvScale' must be non-zero");
+}
+
+}  // namespace pt

@@ -1,0 +1,22 @@
+// <Textured>: the image-map material's attributes, and decoding of its image files.
+#pragma once
+#include <string>
+
+#include "core/image.h"
+#include "scene/scene.h"
+#include "scene/xml_attrs.h"
+
+namespace pt {
+
+// Reads diffuse / specular / normal (paths relative to the scene file), n, uvScale and
+// uvOffset into `m`, loading each image into scene.images once. A file that cannot be
+// read is an error naming it and the element's line.
+void parse_textured_attrs(XmlAttrs& a, Scene& scene, Material& m);
+
+// Decoding of a loaded file's code values (core/image.h): sRGB (IEC 61966-2-1) to linear
+// for 8/16-bit colour maps, HDR values unchanged; normal maps map the code range onto
+// [-1, 1] so that the middle code (128 of 255, 32768 of 65535, 0.5 in a float file) is 0.
+float srgb_to_linear(float v);
+ImageMap decode_image_map(const LoadedImage& img, bool normal);
+
+}  // namespace pt
