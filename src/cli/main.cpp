@@ -29,7 +29,7 @@ int run_render(const Options& o) {
   for (const std::string& out : o.outs)
     if (!ends_with(out, ".png") && !ends_with(out, ".hdr") && !ends_with(out, ".pfm"))
       usage_error("--out must end in .png, .hdr or .pfm");
-  const Scene scene = load_scene_file(o.scene);  // before GL: bad input fails fast
+  const Scene scene = load_scene(o);  // before GL: bad input fails fast
   HeadlessGl gl;
   std::printf("GL: %s\n", gl.description().c_str());
   Renderer r;
@@ -41,6 +41,7 @@ int run_render(const Options& o) {
   r.set_scene(scene);
   std::printf("scene: %s (%zu objects, %zu materials, %zu lights)\n", o.scene.c_str(), scene.shapes.size(),
               scene.materials.size(), scene.lights.size());
+  std::printf("mode: %s\n", kRenderModeNames[int(settings.mode)]);
   std::printf("shader: %zu bytes, compiled and linked in %.1f ms\n", r.integrator_source().text.size(), r.compile_ms());
 
   DrawPacer pacer(40.0);
