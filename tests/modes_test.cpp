@@ -169,6 +169,32 @@ TEST_CASE("Whitted: furnaces through delta surfaces and direct light from a cons
   }
 }
 
+TEST_CASE("Whitted: shadow rays: in a closed room, neither the environment nor a light outside reaches", "[gpu][modes]") {
+  test_gl();
+  Material wall;
+  Scene s = closed_room(wall);
+  s.environment.color = glm::vec3(1.0f);
+  Material emit;
+  emit.kind = MaterialKind::Emit;
+  emit.emission = glm::vec3(10.0f);
+  add_sphere(s, glm::vec3(0.0f, 3.0f, 0.0f), 0.5f, add_material(s, emit));  // above the room's ceiling
+  s.camera.pitch = -60.0f;  // the floor, which faces the light
+  for (bool env_map : {false, true}) {
+    if (env_map) {  // the environment as a map instead: importance-sampled, still occluded
+      auto map = std::make_shared<EnvImage>();
+      map->width = 8;
+      map->height = 4;
+      map->rgba.assign(8 * 4 * 4, 1.0f);
+      s.environment.map = map;
+    }
+    const RenderResult r = render_scene(s, 16, 16, 16, whitted(4));
+    float peak = 0.0f;
+    for (size_t i = 0; i < r.rgba.size(); i += 4) peak = std::max({peak, r.rgba[i], r.rgba[i + 1], r.rgba[i + 2]});
+    INFO((env_map ? "map" : "constant colour") << ": brightest pixel " << peak);
+    CHECK(peak == 0.0f);
+  }
+}
+
 TEST_CASE("SH mode: a white diffuse plane under a constant environment has the environment's radiance", "[gpu][modes]") {
   test_gl();
   Scene s;
