@@ -4,6 +4,7 @@
 
 add_executable(pathtracer_web
   "${CMAKE_SOURCE_DIR}/src/app/app.cpp"
+  "${CMAKE_SOURCE_DIR}/src/app/env_panel.cpp"
   "${CMAKE_SOURCE_DIR}/src/platform/web.cpp")
 set_target_properties(pathtracer_web PROPERTIES OUTPUT_NAME pathtracer SUFFIX ".js")
 target_link_libraries(pathtracer_web PRIVATE pt_core pt_imgui)
@@ -17,7 +18,9 @@ target_link_options(pathtracer_web PRIVATE
   -sALLOW_MEMORY_GROWTH=1
   -sEXPORTED_FUNCTIONS=${PT_EXPORTS_CSV}
   -sEXPORTED_RUNTIME_METHODS=UTF8ToString,stringToUTF8,lengthBytesUTF8
-  --preload-file "${CMAKE_SOURCE_DIR}/scenes@/scenes")
+  # SHELL: keeps the repeated --preload-file (CMake de-duplicates plain options).
+  "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/scenes@/scenes"
+  "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/assets/env@/assets/env")  # the panel's environment choice
 
 # Debian's emcc runs its JavaScript optimizer with node, which finds acorn and friends only
 # through NODE_PATH: set it for the link step so a plain `cmake --build` works.
@@ -26,7 +29,7 @@ if(EXISTS /usr/share/nodejs/acorn)
 endif()
 
 # Re-link when a scene changes (the .data package is written by the link step).
-file(GLOB_RECURSE PT_WEB_SCENES CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/scenes/*")
+file(GLOB_RECURSE PT_WEB_SCENES CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/scenes/*" "${CMAKE_SOURCE_DIR}/assets/env/*")
 set_property(TARGET pathtracer_web APPEND PROPERTY LINK_DEPENDS ${PT_WEB_SCENES})
 
 # The HTML shell and styles are copied as they are, on every build.

@@ -4,27 +4,32 @@
 #pragma once
 #include <cstring>
 
-//  X(Enum, CLI and panel name, root GLSL file)
-#define PT_RENDER_MODES(X)                      \
-  X(PathTracer, "path", "integrator.glsl")      \
-  X(Whitted, "whitted", "whitted.glsl")         \
-  X(SphericalHarmonics, "sh", "sh_irradiance.glsl")
+//  X(Enum, CLI name, root GLSL file, panel label)
+#define PT_RENDER_MODES(X)                                             \
+  X(PathTracer, "path", "integrator.glsl", "path tracer")              \
+  X(Whitted, "whitted", "whitted.glsl", "ray tracer (Whitted)")        \
+  X(SphericalHarmonics, "sh", "sh_irradiance.glsl", "SH irradiance")
 
 namespace pt {
 
 enum class RenderMode : int {
-#define PT_X(e, n, f) e,
+#define PT_X(e, n, f, l) e,
   PT_RENDER_MODES(PT_X)
 #undef PT_X
 };
 
 inline constexpr const char* kRenderModeNames[] = {
-#define PT_X(e, n, f) n,
+#define PT_X(e, n, f, l) n,
     PT_RENDER_MODES(PT_X)
 #undef PT_X
 };
 inline constexpr const char* kRenderModeRoots[] = {
-#define PT_X(e, n, f) f,
+#define PT_X(e, n, f, l) f,
+    PT_RENDER_MODES(PT_X)
+#undef PT_X
+};
+inline constexpr const char* kRenderModeLabels[] = {
+#define PT_X(e, n, f, l) l,
     PT_RENDER_MODES(PT_X)
 #undef PT_X
 };
