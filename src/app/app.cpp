@@ -282,8 +282,6 @@ void App::draw_panel() {
     ImGui::PopStyleColor();
   }
 
-  int mode = int(settings_.mode);  // each mode is its own program, compiled on first use
-  if (ImGui::Combo("mode", &mode, kRenderModeLabels, kNumRenderModes)) settings_.mode = RenderMode(mode);
   ImGui::SliderInt("bounces", &settings_.max_bounces, 1, 16);
   if (ImGui::InputInt("sample limit", &settings_.sample_limit, 16, 256)) settings_.sample_limit = std::max(0, settings_.sample_limit);
   int tonemap = int(settings_.tonemap);
@@ -294,6 +292,8 @@ void App::draw_panel() {
   if (ImGui::Checkbox("auto", &auto_exposure_) && auto_exposure_) next_exposure_at_ = 0;
 
   draw_scene_controls();
+  int mode = int(settings_.mode);  // each mode is its own program, compiled on first use
+  if (ImGui::Combo("mode", &mode, kRenderModeLabels, kNumRenderModes)) settings_.mode = RenderMode(mode);
   if (options_.save_file) {
     // PNG: the image as displayed (tone-mapped); HDR: linear radiance.
     const int w = renderer_->width(), h = renderer_->height();
