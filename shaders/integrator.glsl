@@ -2,33 +2,7 @@
 // u_spp camera paths through its pixel and blends their mean into the running mean of
 // the previous pass (ping-pong). Unbiased: next-event estimation to emissive shapes,
 // combined with BSDF sampling by the power heuristic; Russian roulette after 3 bounces.
-uniform highp sampler2D u_accum;
-uniform highp sampler2D u_stats_in;
-uniform float u_blend;       // weight of this pass: spp / (samples so far + spp)
-uniform int u_spp;           // samples per pixel in this pass
-uniform int u_sample_base;   // index of this pass's first sample
-uniform int u_max_bounces;   // scattering events per path
-uniform int u_nee;           // 1: next-event estimation + MIS; 0: BSDF sampling only
-uniform vec3 u_cam_pos;
-uniform vec3 u_cam_right;    // scaled by tan(fov/2) * aspect
-uniform vec3 u_cam_up;       // scaled by tan(fov/2)
-uniform vec3 u_cam_fwd;
-uniform vec2 u_size;
-uniform float u_lens_radius;     // thin lens: 0 = pinhole
-uniform float u_focal_distance;  // along u_cam_fwd
-uniform float u_shutter;         // camera samples are spread over [0, u_shutter]
-uniform vec3 u_env_color;
-
-layout(location = 0) out vec4 o_accum;
-// Running sums per pixel: x = non-finite samples (dropped), y = rays cast.
-layout(location = 1) out vec4 o_stats;
-
-// A sample is bad when any channel's exponent bits are all ones (NaN or Inf): a bit
-// test, because a driver may assume finite math and fold isnan/isinf away.
-bool non_finite(vec3 c) {
-  uvec3 e = floatBitsToUint(c) & 0x7f800000u;
-  return any(equal(e, uvec3(0x7f800000u)));
-}
+#include "camera_pass.glsl"
 
 vec3 trace_path(Ray r) {
   vec3 L = vec3(0.0);
@@ -133,42 +107,4 @@ vec3 trace_path(Ray r) {
     }
   }
   return L;
-}
-
-void main() {
-  ivec2 px = ivec2(gl_FragCoord.xy);
-  vec3 sum = vec3(0.0);
-  float sum_l2 = 0.0;
-  float bad = 0.0;
-  g_rays = 0;
-  for (int s = 0; s < u_spp; ++s) {
-    sampler_init(uvec2(px), uint(u_sample_base + s));
-    vec4 u_cam = next4();  // xy: position in the pixel (box filter); zw: lens
-    g_time = u_shutter * rand01();
-    vec2 ndc = (vec2(px) + u_cam.xy) / u_size * 2.0 - 1.0;
-    vec3 d = normalize(u_cam_fwd + ndc.x * u_cam_right + ndc.y * u_cam_up);
-    vec3 o = u_cam_pos;
-    if (u_lens_radius > 0.0) {
-      // Thin lens: every ray through the lens point meets the pinhole ray on the plane in
-      // focus, perpendicular to the view direction.
-      vec3 focus = o + d * (u_focal_distance / dot(d, u_cam_fwd));
-      float r = u_lens_radius * sqrt(u_cam.z);
-      float phi = TWO_PI * u_cam.w;
-      o += r * (cos(phi) * normalize(u_cam_right) + sin(phi) * normalize(u_cam_up));
-      d = normalize(focus - o);
-    }
-    vec3 c = trace_path(Ray(o, d));
-    if (non_finite(c)) {
-      bad += 1.0;
-      c = vec3(0.0);
-    }
-    sum += c;
-    float l = luminance(c);
-    sum_l2 += l * l;
-  }
-  // rgb: mean radiance; a: mean squared luminance (for the per-pixel variance).
-  vec4 cur = vec4(sum, sum_l2) / float(u_spp);
-  o_accum = u_blend >= 1.0 ? cur : mix(texelFetch(u_accum, px, 0), cur, u_blend);
-  vec4 prev_stats = u_blend >= 1.0 ? vec4(0.0) : texelFetch(u_stats_in, px, 0);
-  o_stats = prev_stats + vec4(bad, float(g_rays), 0.0, 0.0);
 }

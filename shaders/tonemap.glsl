@@ -16,10 +16,13 @@ vec3 srgb_oetf(vec3 c) {
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
 }
 
-// John Hable's Uncharted 2 curve (filmicgames.com/archives/75), white point 11.2.
+// John Hable's Uncharted 2 curve (filmicgames.com/archives/75), white point 11.2:
+// (x (A x + C B) + D E) / (x (A x + B) + D F) - E / F, over one denominator so that
+// black stays exactly 0 in float (the two terms cancel at x = 0; their rounding error,
+// through the 1/2.2 power, lifted black to 2e-4).
 vec3 hable(vec3 x) {
   const float A = 0.15, B = 0.50, C = 0.10, D = 0.20, E = 0.02, F = 0.30;
-  return ((x * (A * x + C * B) + D * E) / (x * (A * x + B) + D * F)) - E / F;
+  return x * (A * (F - E) * x + B * (C * F - E)) / (F * (x * (A * x + B) + D * F));
 }
 
 // ACES filmic fit by Krzysztof Narkowicz (2016).

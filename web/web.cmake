@@ -4,6 +4,7 @@
 
 add_executable(pathtracer_web
   "${CMAKE_SOURCE_DIR}/src/app/app.cpp"
+  "${CMAKE_SOURCE_DIR}/src/app/env_panel.cpp"
   "${CMAKE_SOURCE_DIR}/src/platform/web.cpp")
 set_target_properties(pathtracer_web PROPERTIES OUTPUT_NAME pathtracer SUFFIX ".js")
 target_link_libraries(pathtracer_web PRIVATE pt_core pt_imgui)

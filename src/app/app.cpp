@@ -76,6 +76,7 @@ App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make
   settings_.band_rows = kFirstBandRows;  // the first frame of a heavy scene stays short
   renderer_->set_settings(settings_);
   scan_scenes();
+  env_panel_.scan(options_.env_root);
   if (!load_scene(options_.scene)) {
     // Nothing rendered yet, so there is no previous scene to keep: fall back to the
     // default one, but keep showing why the requested scene failed.
@@ -131,6 +132,7 @@ bool App::load_scene(const std::string& path) {
     renderer_->set_scene(s);  // throws before changing anything if the program does not build
     s.path = path;
     scene_ = std::move(s);
+    env_panel_.scene_loaded(scene_.environment);
     error_.reset();
     return true;
   } catch (const std::exception& e) {
@@ -240,10 +242,7 @@ void App::draw_scene_controls() {
       edited = true;
     }
   }
-  if (scene_.environment.map && ImGui::CollapsingHeader("Environment")) {
-    edited |= ImGui::SliderFloat("rotation", &scene_.environment.rotation, 0.0f, 720.0f, "%.0f deg");
-    edited |= ImGui::SliderFloat("energy", &scene_.environment.intensity, 0.0f, 5.0f);
-  }
+  edited |= env_panel_.draw(scene_.environment);
   Camera cam = renderer_->camera();
   if (ImGui::CollapsingHeader("Lens and shutter")) {
     const float scale = std::max(1.0f, glm::length(cam.position));  // drag speeds follow the scene's size
@@ -293,6 +292,8 @@ void App::draw_panel() {
   if (ImGui::Checkbox("auto", &auto_exposure_) && auto_exposure_) next_exposure_at_ = 0;
 
   draw_scene_controls();
+  int mode = int(settings_.mode);  // each mode is its own program, compiled on first use
+  if (ImGui::Combo("mode", &mode, kRenderModeLabels, kNumRenderModes)) settings_.mode = RenderMode(mode);
   if (options_.save_file) {
     // PNG: the image as displayed (tone-mapped); HDR: linear radiance.
     const int w = renderer_->width(), h = renderer_->height();

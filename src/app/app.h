@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/env_panel.h"
 #include "gpu/texture.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
@@ -18,6 +19,7 @@ namespace pt {
 struct AppOptions {
   std::string scene_root = "/scenes";                    // searched recursively for *.xml
   std::string scene = "/scenes/reference/scene2.xml";    // first scene shown
+  std::string env_root = "/assets/env";                  // the shipped HDR maps (*.hdr)
   int width = 0, height = 0;                             // fixed render size; 0 = framebuffer size
   int sample_limit = 0;                                  // 0 = unlimited
   // A view from a link (URL parameters): the camera pose and main settings, applied
@@ -68,6 +70,7 @@ class App {
   RenderSettings settings_;
   std::vector<std::string> scene_files_;  // paths under options_.scene_root
   std::optional<std::string> error_;
+  EnvPanel env_panel_;
 
   // Frame pacing: the number of passes per frame adapts to the interval between frames.
   double last_frame_ms_ = -1.0;

@@ -25,7 +25,7 @@ namespace pt::cli {
 int run_bench(const Options& o) {
   if (o.reference.empty() == (o.reference_value < 0)) usage_error("bench needs one of --reference or --reference-value");
   const double duration = o.seconds > 0 ? o.seconds : 10.0;
-  const Scene scene = load_scene_file(o.scene);
+  const Scene scene = load_scene(o);
   std::vector<float> ref(4, float(o.reference_value));
   if (!o.reference.empty()) {
     int w = 0, h = 0;

@@ -30,7 +30,7 @@ int run_render(const Options& o) {
     if (!ends_with(out, ".png") && !ends_with(out, ".hdr") && !ends_with(out, ".pfm"))
       usage_error("--out must end in .png, .hdr or .pfm");
   const auto tl = std::chrono::steady_clock::now();
-  const Scene scene = load_scene_file(o.scene);  // before GL: bad input fails fast
+  const Scene scene = load_scene(o);  // before GL: bad input fails fast
   const double load_ms = seconds_since(tl) * 1e3;
   HeadlessGl gl;
   std::printf("GL: %s\n", gl.description().c_str());
@@ -46,6 +46,7 @@ int run_render(const Options& o) {
   const double set_ms = seconds_since(ts) * 1e3 - r.compile_ms();
   std::printf("scene: %s (%zu objects, %zu materials, %zu lights), loaded in %.0f ms\n", o.scene.c_str(), scene.shapes.size(),
               scene.materials.size(), scene.lights.size(), load_ms);
+  std::printf("mode: %s\n", kRenderModeNames[int(settings.mode)]);
   const Renderer::BvhStats& bs = r.bvh_stats();
   std::printf("BVH: %d primitives, %d nodes, depth %d, built in %.0f ms; packed and uploaded in %.0f ms in all\n", bs.primitives,
               bs.nodes, bs.depth, bs.build_ms, set_ms);

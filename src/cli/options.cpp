@@ -4,6 +4,9 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "scene/env_map.h"
+#include "scene/xml_loader.h"
+
 namespace pt::cli {
 
 const char* const kUsage =
@@ -19,6 +22,9 @@ const char* const kUsage =
     "  --sampler S       sobol (Owen-scrambled Sobol for the camera and first bounce, default),\n"
     "                    sobol-all (every bounce) or independent (PCG)\n"
     "  --tonemap NAME    none linear reinhard filmic srgb uncharted2 aces (default aces)\n"
+    "  --mode M          path (path tracer, default), whitted (ray tracer: direct light, mirrors,\n"
+    "                    refraction) or sh (environment irradiance from spherical harmonics)\n"
+    "  --env FILE.hdr    an equirectangular HDR map replacing the scene's environment\n"
     "render: --spp N (default 64), or until --seconds S if that comes first (references);\n"
     "        --out .png is tone-mapped, .hdr/.pfm linear radiance (--out may repeat);\n"
     "        --exposure X multiplies before the tone map, 'auto' maps the log-average to 0.18\n"
@@ -77,6 +83,11 @@ Options parse_options(int argc, char** argv, bool bench) {
     } else if (a == "--tonemap") {
       const char* v = next();
       if (!tonemap_from_name(v, &o.settings.tonemap)) usage_error(std::string("unknown tone map: ") + v);
+    } else if (a == "--mode") {
+      const char* v = next();
+      if (!render_mode_from_name(v, &o.settings.mode)) usage_error(std::string("unknown mode: ") + v);
+    } else if (a == "--env") {
+      o.env = next();
     } else if (!bench && a == "--spp") {
       o.spp = parse_int(next(), "--spp", 1, 1 << 24);
     } else if (!bench && a == "--out") {
@@ -101,6 +112,12 @@ Options parse_options(int argc, char** argv, bool bench) {
   }
   if (o.outs.empty()) o.outs.push_back("out.png");
   return o;
+}
+
+Scene load_scene(const Options& o) {
+  Scene s = load_scene_file(o.scene);
+  if (!o.env.empty()) set_env_map(s.environment, o.env);
+  return s;
 }
 
 }  // namespace pt::cli

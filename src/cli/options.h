@@ -9,6 +9,7 @@ namespace pt::cli {
 
 struct Options {
   std::string scene;
+  std::string env;      // --env: an HDR map replacing the scene's environment
   int width = 512, height = 512;
   int spp = 64;         // render: samples per pixel
   int per_pass = 0;     // 0: adapt the draw size to the measured time
@@ -25,6 +26,8 @@ struct Options {
 extern const char* const kUsage;
 [[noreturn]] void usage_error(const std::string& msg);
 Options parse_options(int argc, char** argv, bool bench);
+// The scene file with the options that change it applied (--env). Throws on bad input.
+Scene load_scene(const Options& o);
 
 int run_render(const Options& o);
 int run_bench(const Options& o);

@@ -51,11 +51,9 @@ Renderer::~Renderer() {
   if (vao_) glDeleteVertexArrays(1, &vao_);
 }
 
-void Renderer::set_scene(const Scene& scene) {
-  const Features f = Features::of(scene);
-  // Image maps first: a scene beyond this GPU's texture limits throws before anything changes.
-  const bool textured = f.has(MaterialKind::Textured);
-  const MapArray maps = textured ? build_map_array(scene, TextureArray::max_size(), TextureArray::max_layers()) : MapArray{};
+void Renderer::select_program() {
+  Features f = features_;
+  f.mode = settings_.mode;
   auto& slot = cache_[f.key()];
   if (!slot) {
     auto c = std::make_unique<CachedProgram>();
@@ -65,6 +63,33 @@ void Renderer::set_scene(const Scene& scene) {
   }
   integrator_ = &slot->program;
   source_ = &slot->source;
+}
+
+void Renderer::update_sh() {
+  if (settings_.mode != RenderMode::SphericalHarmonics || sh_valid_) return;
+  sh_ = project_sh(env_);
+  sh_valid_ = true;
+}
+
+void Renderer::set_scene(const Scene& scene) {
+  const Features old = features_;
+  features_ = Features::of(scene);
+  // Image maps first: a scene beyond this GPU's texture limits throws before anything changes.
+  const bool textured = features_.has(MaterialKind::Textured);
+  MapArray maps;
+  try {
+    if (textured) maps = build_map_array(scene, TextureArray::max_size(), TextureArray::max_layers());
+    select_program();
+  } catch (...) {
+    features_ = old;  // nothing changed
+    throw;
+  }
+  have_scene_ = true;
+  const Environment& e = scene.environment;
+  if (e.map != env_.map || e.color != env_.color || e.rotation != env_.rotation || e.intensity != env_.intensity)
+    sh_valid_ = false;
+  env_ = e;
+  update_sh();
   const PackedScene p = pack_scene(scene);
   shape_tex_ = upload(p.shapes, "shapes");
   material_tex_ = upload(p.materials, "materials");
@@ -118,7 +143,12 @@ void Renderer::set_settings(const RenderSettings& s) {
   a.spp_per_pass = b.spp_per_pass;
   a.band_rows = b.band_rows;
   if (!(a == b)) restart();
+  const bool new_mode = s.mode != settings_.mode;
   settings_ = s;
+  if (new_mode && have_scene_) {
+    select_program();
+    update_sh();
+  }
 }
 
 void Renderer::resize(int width, int height) {
@@ -184,6 +214,7 @@ int Renderer::step() {
   p.set("u_focal_distance", camera_.focal_distance);
   p.set("u_shutter", std::min(camera_.shutter, motion_bound_));  // moving spheres are bounded over [0, motion_bound_]
   p.set("u_env_color", env_color_);
+  if (settings_.mode == RenderMode::SphericalHarmonics) glUniform3fv(p.loc("u_sh"), 9, &sh_[0].x);
   if (env_tex_.id()) {
     env_tex_.bind(kEnvUnit);
     env_cdf_tex_.bind(kEnvCdfUnit);

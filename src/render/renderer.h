@@ -10,6 +10,8 @@
 #include "gpu/program.h"
 #include "gpu/texture.h"
 #include "gpu/texture_array.h"
+#include "render/render_mode.h"
+#include "render/sh.h"
 #include "render/tonemap.h"
 #include "scene/scene.h"
 #include "shadergen/shadergen.h"
@@ -22,6 +24,7 @@ struct RenderSettings {
   int band_rows = 0;     // rows per draw: a sweep of the image is several draws; 0 = all
   int sample_limit = 0;  // stop after this many samples per pixel; 0 = never
   bool nee = true;       // next-event estimation with MIS (off: BSDF sampling only)
+  RenderMode mode = RenderMode::PathTracer;  // a different program per mode
   int sampler = 3;       // 4D blocks of a path drawn from Owen-scrambled Sobol (0: all independent)
   ToneMap tonemap = ToneMap::Aces;
   float exposure = 1.0f;
@@ -89,6 +92,13 @@ class Renderer {
     ShaderSource source;
     Program program;
   };
+  void select_program();  // the cached (or newly built) program for features_ + settings_.mode
+  void update_sh();       // the environment's SH coefficients, when the mode needs them
+  Features features_;
+  bool have_scene_ = false;
+  Environment env_;       // as last set (for the SH projection)
+  ShCoeffs sh_{};
+  bool sh_valid_ = false;
   Program* integrator_ = nullptr;
   const ShaderSource* source_ = nullptr;
   std::unordered_map<uint64_t, std::unique_ptr<CachedProgram>> cache_;

@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/image.h"
+#include "scene/env_map.h"
 #include "scene/mesh_generate.h"
 #include "scene/mesh_gltf.h"
 #include "scene/mesh_json.h"
@@ -190,19 +191,11 @@ struct Loader {
   }
 
   std::shared_ptr<const EnvImage> load_env_image(XmlAttrs& a, const std::string& path) {
-    auto img = std::make_shared<EnvImage>();
-    std::vector<float> rgba;
-    if (!read_hdr(path, &img->width, &img->height, &rgba)) a.fail("cannot read the environment map '" + path + "'");
-    if (img->width < 2 || img->height < 1 || img->width > 16384 || img->height > 8192)
-      a.fail("environment map '" + path + "' has an unusable size");
-    // read_hdr gives rows bottom to top; the map is kept top (theta = 0) to bottom.
-    const size_t row = size_t(img->width) * 4;
-    img->rgba.resize(rgba.size());
-    for (int y = 0; y < img->height; ++y)
-      std::copy_n(&rgba[size_t(img->height - 1 - y) * row], row, &img->rgba[size_t(y) * row]);
-    for (float& v : img->rgba)
-      if (!std::isfinite(v) || v < 0.0f) a.fail("environment map '" + path + "' has negative or non-finite values");
-    return img;
+    try {
+      return load_env_map(path);
+    } catch (const std::runtime_error& e) {
+      a.fail(e.what());
+    }
   }
 
   [[noreturn]] void fail(const XMLElement* e, const std::string& what) {

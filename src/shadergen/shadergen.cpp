@@ -233,7 +233,10 @@ std::string generate_prelude(const Features& features) {
 }
 
 ShaderSource generate_integrator(const Features& f) {
-  return resolve_includes(generate_prelude(f) + "#include \"integrator.glsl\"\n", "<generated integrator>");
+  Features g = f;
+  if (f.mode == RenderMode::SphericalHarmonics) g.lights = 0;  // it samples no light
+  return resolve_includes(generate_prelude(g) + "#include \"" + kRenderModeRoots[int(f.mode)] + "\"\n",
+                          "<generated integrator>");
 }
 
 ShaderSource generate_display() {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "render/render_mode.h"
 #include "scene/scene.h"
 
 namespace pt {
@@ -16,15 +17,17 @@ struct Features {
   uint32_t lights = 0;     // bit i: an emitter of ShapeKind i is light-sampled
   bool env_map = false;    // an HDR environment map (importance-sampled)
   bool motion = false;     // a sphere moves (velocity): intersection depends on time
+  RenderMode mode = RenderMode::PathTracer;  // a render setting, not the scene's: the renderer sets it
   bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
   bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
   bool has_light(ShapeKind k) const { return lights >> int(k) & 1u; }
   uint64_t key() const {
     return uint64_t(shapes) | uint64_t(lights) << 16 | uint64_t(materials) << 32 | uint64_t(motion) << 62 |
-           uint64_t(env_map) << 63;
+           uint64_t(env_map) << 63 | uint64_t(mode) << 56;  // materials use bits 32..55
   }
   static Features of(const Scene& scene);
 };
+static_assert(kNumShapeKinds <= 16 && kNumMaterialKinds <= 24 && kNumRenderModes <= 64, "Features::key bits");
 
 // A program's text after include resolution, and the files that its "#line L S"
 // directives number S (0 is the generated text), so logs can name the snippet file.
@@ -47,6 +50,7 @@ ShaderSource resolve_includes(const std::string& root_text, const std::string& r
 // kind ids, record loaders, the kinds' snippets and the generated dispatch (unresolved
 // text). The integrator appends its main; the GLSL test harness appends a kernel.
 std::string generate_prelude(const Features& f);
+// The render program: the prelude and the mode's root file (kRenderModeRoots).
 ShaderSource generate_integrator(const Features& f);
 ShaderSource generate_display();
 ShaderSource fullscreen_vertex();

@@ -212,8 +212,8 @@ async function main() {
             `worst relative difference ${(100 * worst).toFixed(2)}% > ${(100 * tol).toFixed(2)}% at ${s.samples} spp`);
     }
 
-    // The canvas shows the page's tone-mapped image, scaled to fit: compare the lower half of
-    // it (the panel covers part of the upper half) with the page's own display read-back.
+    // The canvas shows the page's tone-mapped image, scaled to fit: compare its lower right
+    // quarter (the panel covers part of the left) with the page's own display read-back.
     await page.waitForTimeout(300);
     const shot = decodePng(await page.screenshot({ path: join(outDir, "scene2.png") }));
     const display = await page.evaluate(() => window.ptDisplay());
@@ -225,7 +225,7 @@ async function main() {
     const x0 = Math.floor((box.bw - Math.floor(size * scale)) / 2), y0 = Math.floor((box.bh - Math.floor(size * scale)) / 2);
     let close = 0, total = 0;
     for (let y = size / 2; y < size; y++)  // rows top to bottom on screen
-      for (let x = 0; x < size; x++) {
+      for (let x = size / 2; x < size; x++) {
         const sx = Math.floor(box.x + (x0 + (x + 0.5) * scale) * css), sy = Math.floor(box.y + (y0 + (y + 0.5) * scale) * css);
         const i = 4 * ((size - 1 - y) * size + x);
         let worst = 0;
@@ -253,10 +253,11 @@ async function main() {
     console.log(`# light intensity slider clicked: mean green radiance ${dim.mean[1].toFixed(4)} -> ${bright.mean[1].toFixed(4)} (x${brighter.toFixed(2)})`);
     check("moving a slider changes the image", brighter > 1.2, `ratio ${brighter.toFixed(3)} (want > 1.2)`);
 
-    // Saving from the page: the two buttons under the panel's sections download the image.
+    // Saving from the page: the two buttons under the panel's sections (Light, Environment, Lens; then
+    // the mode combo) download the image.
     const saved = {};
     for (const [name, x, signature] of [["pathtracer.png", 48, "\x89PNG\r\n\x1a\n"], ["pathtracer.hdr", 121, "#?RADIANCE"]]) {
-      const [download] = await Promise.all([page.waitForEvent("download", { timeout: 30000 }), page.mouse.click(x, 277)]);
+      const [download] = await Promise.all([page.waitForEvent("download", { timeout: 30000 }), page.mouse.click(x, 323)]);
       const bytes = readFileSync(await download.path());
       saved[name] = download.suggestedFilename() === name && bytes.subarray(0, signature.length).toString("latin1") === signature;
       console.log(`# saved ${download.suggestedFilename()}: ${bytes.length} bytes`);
