@@ -34,7 +34,7 @@ void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
     if (p.tag != skip) triangle_prim(p, r, pre.triangle, h);
 #endif
   } else if (-1 - p.tag != skip) {
-    intersect_analytic(-1 - p.tag, r, pre, h);
+    intersect_analytic(p, r, pre, h);
   }
   if (h.t < before) h.prim = i;
 }

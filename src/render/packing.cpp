@@ -61,6 +61,16 @@ struct PrimRef {
   int tri;  // -1: analytic
 };
 
+// An analytic shape's primitive: what intersect_<kind> reads of its shape record.
+void pack_analytic_prim(PackedScene& p, const Shape& s, int shape) {
+  const int k = p.prims.add();
+  p.prims.set(k, prim_rec::tag, -1 - shape);
+  p.prims.set(k, prim_rec::kind, int(s.kind));
+  p.prims.set(k, prim_rec::v0, s.a);
+  p.prims.set(k, prim_rec::v1, s.kind == ShapeKind::Sphere ? s.velocity : s.b);
+  p.prims.set(k, prim_rec::radius, s.radius);
+}
+
 bool degenerate(const glm::vec3 v[3]) { return !(glm::length(glm::cross(v[1] - v[0], v[2] - v[0])) > 0.0f); }
 
 }  // namespace
@@ -85,8 +95,7 @@ PackedScene pack_scene(const Scene& scene) {
     const Shape& s = scene.shapes[i];
     switch (info(s.kind).bvh) {
       case BvhRole::Unbounded: {
-        const int k = p.prims.add();
-        p.prims.set(k, prim_rec::tag, -1 - int(i));
+        pack_analytic_prim(p, s, int(i));
         ++p.unbounded;
         break;
       }
@@ -163,11 +172,11 @@ PackedScene pack_scene(const Scene& scene) {
   for (int r : bvh.order) {
     const PrimRef& ref = refs[size_t(r)];
     const Shape& s = scene.shapes[size_t(ref.shape)];
-    const int k = p.prims.add();
     if (ref.tri < 0) {
-      p.prims.set(k, prim_rec::tag, -1 - ref.shape);
+      pack_analytic_prim(p, s, ref.shape);
       continue;
     }
+    const int k = p.prims.add();
     glm::vec3 v[3] = {s.a, s.b, s.c};
     glm::vec3 attr(-1.0f);
     if (s.kind == ShapeKind::Mesh) {

@@ -45,11 +45,12 @@
 // A primitive of the BVH, in leaf order. tag >= 0: a triangle of shape `tag` (vertices
 // in world space; attr = the indices of its vertices in the vertex-attribute records, or
 // -1 when the mesh has none); tag < 0: the analytic shape -1 - tag (sphere, box, or an
-// unbounded plane), tested through its shape record.
+// unbounded plane) with a copy of the geometry its intersection reads (kind, a, b,
+// radius of its shape record), so the traversal never fetches the shape record.
 #define PT_PRIM_RECORD(F) \
   F(vec3, v0, 0, 0) F(int, tag, 0, 3) \
-  F(vec3, v1, 1, 0) \
-  F(vec3, v2, 2, 0) \
+  F(vec3, v1, 1, 0) F(int, kind, 1, 3) \
+  F(vec3, v2, 2, 0) F(float, radius, 2, 3) \
   F(vec3, attr, 3, 0)
 
 // Per-vertex attributes of mesh instances (world space): shading normal (0 when the mesh

@@ -187,7 +187,9 @@ std::string generate_prelude(const Features& features) {
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i)) && kShapeKinds[i].per_ray)
       g += "  p." + std::string(kShapeKinds[i].glsl) + " = prepare_" + kShapeKinds[i].glsl + "(r);\n";
-  g += "  return p;\n}\nvoid intersect_analytic(int id, Ray r, RayPre pre, inout Hit h) {\n  ShapeRec s = load_shape(id);\n";
+  // The primitive carries the fields of the shape record that intersection reads.
+  g += "  return p;\n}\nvoid intersect_analytic(PrimRec p, Ray r, RayPre pre, inout Hit h) {\n  int id = -1 - p.tag;\n"
+       "  ShapeRec s;\n  s.kind = p.kind;\n  s.a = p.v0;\n  s.b = p.v1;\n  s.radius = p.radius;\n";
   for (int i = 0; i < kNumShapeKinds; ++i) {
     const BvhRole role = kShapeKinds[i].bvh;
     if (!f.has(ShapeKind(i)) || (role != BvhRole::Analytic && role != BvhRole::Unbounded)) continue;
