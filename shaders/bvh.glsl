@@ -23,8 +23,8 @@ float bvh_box_entry(vec3 lo, vec3 hi, vec3 o, vec3 inv, float tmax) {
 }
 
 // A stack entry: an interior node as the index of its first child (>= 0), a leaf as
-// -1 - (first primitive * 8 + count - 1) (leaves hold 1..8 primitives).
-int bvh_entry(NodeRec n) { return n.count == 0 ? n.first : -1 - (n.first * 8 + n.count - 1); }
+// -1 - (first primitive * 16 + count - 1) (leaves hold 1..16 primitives).
+int bvh_entry(NodeRec n) { return n.count == 0 ? n.first : -1 - (n.first * 16 + n.count - 1); }
 
 void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
   PrimRec p = load_prim(i);
@@ -73,8 +73,8 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
       }
     } else {
       int code = -1 - cur;
-      int first = code >> 3;
-      int end = first + (code & 7) + 1;
+      int first = code >> 4;
+      int end = first + (code & 15) + 1;
       for (int i = first; i < end; ++i) bvh_prim(i, r, pre, skip, h);
       if (any_hit && h.id >= 0) return h;
     }

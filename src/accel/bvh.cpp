@@ -30,13 +30,21 @@ class Builder {
       out_.order[i] = int(i);
     }
     o_.bins = std::clamp(o_.bins, 2, kMaxBins);
-    o_.max_leaf = std::max(1, o_.max_leaf);
+    o_.max_leaf = std::clamp(o_.max_leaf, 1, 16);
+    o_.single_leaf_max = std::clamp(o_.single_leaf_max, 1, 16);
   }
 
   void run() {
     if (boxes_.empty()) return;
     out_.nodes.reserve(2 * boxes_.size() / std::min(o_.max_leaf, 2) + 1);
     out_.nodes.emplace_back();
+    if (int(boxes_.size()) <= o_.single_leaf_max) {
+      for (const Aabb& b : boxes_) out_.nodes[0].box.grow(b);
+      out_.nodes[0].first = 0;
+      out_.nodes[0].count = int(boxes_.size());
+      out_.depth = 1;
+      return;
+    }
     std::vector<Task> stack{{0, 0, int(boxes_.size()), 1}};
     while (!stack.empty()) {
       const Task t = stack.back();

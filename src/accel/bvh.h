@@ -19,7 +19,12 @@ struct BvhNode {
 
 struct BvhBuildOptions {
   int bins = 16;            // candidate split planes per axis
-  int max_leaf = 8;         // never more primitives in a leaf (the traversal stack packs the count in 3 bits)
+  int max_leaf = 8;         // split nodes larger than this
+  // A hierarchy of at most this many primitives is one leaf (a plain loop over them).
+  // Measured on the H100 for the reference scenes (10 to 15 primitives): 16 made two of
+  // three slower (docs/benchmarks.md), so by default only a lone primitive is. The
+  // traversal packs a leaf's count in 4 bits: at most 16.
+  int single_leaf_max = 1;
   float traversal_cost = 1.0f;  // SAH cost of one node visit, relative to one primitive test
   int max_depth = 64;       // near this depth, object-median splits take over (a bound for the GPU stack)
 };
