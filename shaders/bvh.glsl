@@ -61,14 +61,16 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
       NodeRec b = load_node(cur + 1);
       float ta = bvh_box_entry(a.lo, a.hi, r.o, inv, h.t);
       float tb = bvh_box_entry(b.lo, b.hi, r.o, inv, h.t);
+      // (Entries, not records, in the selections: WebGL has no ?: on structures.)
+      int ea = bvh_entry(a), eb = bvh_entry(b);
       if (ta < T_INF && tb < T_INF) {
         bool a_first = ta <= tb;
-        stack[sp++] = bvh_entry(a_first ? b : a);
-        cur = bvh_entry(a_first ? a : b);
+        stack[sp++] = a_first ? eb : ea;
+        cur = a_first ? ea : eb;
         continue;
       }
       if (ta < T_INF || tb < T_INF) {
-        cur = bvh_entry(ta < T_INF ? a : b);
+        cur = ta < T_INF ? ea : eb;
         continue;
       }
     } else {
