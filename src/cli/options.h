@@ -16,7 +16,7 @@ struct Options {
   bool auto_exposure = false;
   RenderSettings settings;
   // bench
-  double seconds = 0;  // bench: duration (default 10); render: optional time limit
+  double seconds = 0;  // bench: duration (default 10); render, watch: optional time limit
   std::string reference;         // .pfm or .hdr
   double reference_value = -1;   // a constant (analytic) reference instead
   std::string csv, label;
@@ -27,6 +27,7 @@ extern const char* const kUsage;
 Options parse_options(int argc, char** argv, bool bench);
 
 int run_render(const Options& o);
+int run_watch(const Options& o);
 int run_bench(const Options& o);
 int run_plot(int argc, char** argv);
 
