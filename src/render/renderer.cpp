@@ -42,14 +42,27 @@ Renderer::~Renderer() {
   if (vao_) glDeleteVertexArrays(1, &vao_);
 }
 
-void Renderer::set_scene(const Scene& scene) {
+bool Renderer::program_ready(const Scene& scene) {
   const Features f = Features::of(scene);
   auto& slot = cache_[f.key()];
   if (!slot) {
     auto c = std::make_unique<CachedProgram>();
     c->source = generate_integrator(f);
-    c->program = Program(fullscreen_vertex(), c->source);
+    c->program = Program::start(fullscreen_vertex(), c->source);
     slot = std::move(c);
+  }
+  return slot->program.completed();
+}
+
+void Renderer::set_scene(const Scene& scene) {
+  program_ready(scene);
+  const uint64_t key = Features::of(scene).key();
+  auto& slot = cache_[key];
+  try {
+    slot->program.finish();
+  } catch (...) {
+    cache_.erase(key);  // a failed build is not cached: the next try reports it again
+    throw;
   }
   integrator_ = &slot->program;
   source_ = &slot->source;
