@@ -213,10 +213,13 @@ void App::handle_input(double dt_s) {
     }
   }
 
-  // A drag looks around only if it started on the image, not on a panel.
+  // A drag looks around only if it started on the image, not on a panel, and only from
+  // the frame after the press: the move that brought the pointer there is not a drag
+  // (a click that picks an object leaves the view alone).
+  const bool was_dragging = dragging_;
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse) dragging_ = true;
   if (!io.MouseDown[ImGuiMouseButton_Left]) dragging_ = false;
-  if (dragging_ && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+  if (was_dragging && dragging_ && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
     c.yaw += io.MouseDelta.x * kLookDegPerPixel;
     c.pitch -= io.MouseDelta.y * kLookDegPerPixel;
     changed = true;
