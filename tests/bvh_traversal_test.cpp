@@ -69,19 +69,6 @@ Scene mixed_scene(std::vector<glm::vec3>* grid_vertices, int* grid_n) {
   return s;
 }
 
-struct Bound {
-  Texture shapes, nodes, prims, vertices;
-  int unbounded = 0, nodes_count = 0, prims_count = 0;
-};
-
-Bound upload(const PackedScene& p) {
-  auto tex = [](const RecordBuffer& b) {
-    const std::vector<float> t = b.texels();
-    return Texture(kDataWidth, b.rows(), GL_RGBA32F, t.data());
-  };
-  return Bound{tex(p.shapes), tex(p.nodes), tex(p.prims), tex(p.vertices), p.unbounded, p.nodes.count(), p.prims.count()};
-}
-
 // Input: ray origin (xyz) and a seed (w); output: (prim, t, shape, occluded at t_test).
 const char* kRays =
     "uniform int u_num_prims;\n"
@@ -97,16 +84,10 @@ const char* kRays =
     "  return Ray(o, normalize(x.xyz - o));\n"
     "}\n";
 
-std::vector<glm::vec4> run(const Scene& scene, const Bound& b, const std::string& body, const std::vector<glm::vec4>& in, int mode) {
+std::vector<glm::vec4> run(const Scene& scene, const PackedScene& p, const std::string& body, const std::vector<glm::vec4>& in, int mode) {
   GlslKernel k(std::string(kRays) + body, Features::of(scene));
-  k.bind("u_shape_data", b.shapes);
-  k.bind("u_node_data", b.nodes);
-  k.bind("u_prim_data", b.prims);
-  k.bind("u_vertex_data", b.vertices);
-  k.program().use();
-  k.program().set("u_num_unbounded", b.unbounded);
-  k.program().set("u_num_nodes", b.nodes_count);
-  k.program().set("u_num_prims", b.prims_count);
+  k.bind_scene(p);
+  k.program().set("u_num_prims", p.prims.count());
   k.program().set("u_mode", mode);
   return k.run(in);
 }
@@ -115,16 +96,15 @@ std::vector<glm::vec4> run(const Scene& scene, const Bound& b, const std::string
 // that hit something.
 int compare(const Scene& scene, const std::vector<glm::vec4>& in, int mode, const char* what) {
   const PackedScene p = pack_scene(scene);
-  const Bound b = upload(p);
   // The shadow query is asked at a distance that splits the hits: half the nearest t.
-  const std::vector<glm::vec4> bvh = run(scene, b,
+  const std::vector<glm::vec4> bvh = run(scene, p,
                                          "vec4 kernel(vec4 x, int i) {\n  Ray r = make_ray(x, i);\n"
                                          "  Hit h = trace_scene(r, T_INF, false, -1);\n"
                                          "  float probe = h.id >= 0 ? (fract(x.w) < 0.5 ? h.t * 0.999 : h.t * 1.001) : 1e30;\n"
                                          "  bool occ = occluded(r, probe, -1);\n"
                                          "  return vec4(float(h.prim), h.t, float(h.id), occ ? 1.0 : 0.0);\n}\n",
                                          in, mode);
-  const std::vector<glm::vec4> brute = run(scene, b,
+  const std::vector<glm::vec4> brute = run(scene, p,
                                            "vec4 kernel(vec4 x, int i) {\n  Ray r = make_ray(x, i);\n"
                                            "  RayPre pre = prepare_ray(r);\n  Hit h = no_hit();\n"
                                            "  for (int k = 0; k < u_num_prims; ++k) bvh_prim(k, r, pre, -1, h);\n"

@@ -28,6 +28,24 @@ GlslKernel::GlslKernel(const std::string& body, const Features& f) {
 
 void GlslKernel::bind(const char* sampler, const Texture& t) { textures_.emplace_back(sampler, &t); }
 
+void GlslKernel::bind_scene(const PackedScene& p) {
+  auto add = [&](const char* sampler, const RecordBuffer& b) {
+    const std::vector<float> t = b.texels();
+    owned_.push_back(std::make_unique<Texture>(kDataWidth, b.rows(), GL_RGBA32F, t.data()));
+    bind(sampler, *owned_.back());
+  };
+  add("u_shape_data", p.shapes);
+  add("u_material_data", p.materials);
+  add("u_light_data", p.lights);
+  add("u_node_data", p.nodes);
+  add("u_prim_data", p.prims);
+  add("u_vertex_data", p.vertices);
+  program_.use();
+  program_.set("u_num_lights", p.lights.count());
+  program_.set("u_num_unbounded", p.unbounded);
+  program_.set("u_num_nodes", p.nodes.count());
+}
+
 std::vector<glm::vec4> GlslKernel::run(const std::vector<glm::vec4>& inputs) {
   const int n = int(inputs.size());
   const int rows = (n + kDataWidth - 1) / kDataWidth;

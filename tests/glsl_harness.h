@@ -12,6 +12,8 @@
 
 #include "gpu/program.h"
 #include "gpu/texture.h"
+#include "render/packing.h"
+#include <memory>
 #include "shadergen/shadergen.h"
 
 namespace pt {
@@ -27,9 +29,13 @@ class GlslKernel {
   Program& program() { return program_; }
   // A texture bound to `sampler` on every run (units 1 and up; 0 holds the inputs).
   void bind(const char* sampler, const Texture& t);
+  // Uploads a packed scene (shapes, materials, lights, BVH nodes, primitives, mesh
+  // vertices) and binds it with its counts, as the renderer does.
+  void bind_scene(const PackedScene& p);
 
  private:
   Program program_;
+  std::vector<std::unique_ptr<Texture>> owned_;
   std::vector<std::pair<std::string, const Texture*>> textures_;
 };
 

@@ -7,4 +7,4 @@ bash tools/deps.sh web
 export NODE_PATH=/usr/share/nodejs
 cmake --preset web >/dev/null
 cmake --build --preset web
-exec node tools/serve.mjs build/web "${1:-8000}"
+exec node tools/serve.mjs build/web "${1:-8000}" --dev

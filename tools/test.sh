@@ -18,5 +18,7 @@ if [[ -z "${PT_SKIP_BROWSER:-}" ]]; then
   cmake --build --preset web
   echo "== browser test (headless Chromium, WebGL 2 through SwiftShader)"
   node tests/browser/page_test.mjs --web build/web --native build/native/pathtracer
+  bash tools/site.sh >/dev/null
+  node tests/browser/app_test.mjs --web build/web --site build/site
 fi
 echo "== all tests passed in $(( $(date +%s) - start )) s"

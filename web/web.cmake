@@ -5,19 +5,20 @@
 add_executable(pathtracer_web
   "${CMAKE_SOURCE_DIR}/src/app/app.cpp"
   "${CMAKE_SOURCE_DIR}/src/app/env_panel.cpp"
+  "${CMAKE_SOURCE_DIR}/src/app/app_interaction.cpp"
   "${CMAKE_SOURCE_DIR}/src/platform/web.cpp")
 set_target_properties(pathtracer_web PROPERTIES OUTPUT_NAME pathtracer SUFFIX ".js")
 target_link_libraries(pathtracer_web PRIVATE pt_core pt_imgui)
 target_compile_options(pathtracer_web PRIVATE ${PT_WARNINGS})
 
-set(PT_WEB_SHELL_FILES index.html style.css)
-set(PT_EXPORTS _main _malloc _free _pt_stats_json _pt_view_query _pt_set_size _pt_set_sample_limit _pt_radiance _pt_display _pt_load_scene)
+set(PT_WEB_SHELL_FILES index.html style.css files.js)
+set(PT_EXPORTS _main _malloc _free _pt_stats_json _pt_view_query _pt_set_size _pt_set_sample_limit _pt_radiance _pt_display _pt_load_scene _pt_reload_scene _pt_scene_files)
 list(JOIN PT_EXPORTS "," PT_EXPORTS_CSV)
 target_link_options(pathtracer_web PRIVATE
   -sUSE_GLFW=3 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2
   -sALLOW_MEMORY_GROWTH=1
   -sEXPORTED_FUNCTIONS=${PT_EXPORTS_CSV}
-  -sEXPORTED_RUNTIME_METHODS=UTF8ToString,stringToUTF8,lengthBytesUTF8
+  -sEXPORTED_RUNTIME_METHODS=UTF8ToString,stringToUTF8,lengthBytesUTF8,FS,addRunDependency,removeRunDependency
   # SHELL: keeps the repeated --preload-file (CMake de-duplicates plain options).
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/scenes@/scenes"
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/assets@/assets")  # meshes, image maps, environments
@@ -41,3 +42,11 @@ foreach(f ${PT_WEB_SHELL_FILES})
 endforeach()
 add_custom_target(pathtracer_web_shell ALL DEPENDS ${PT_WEB_SHELL_OUT})
 add_dependencies(pathtracer_web pathtracer_web_shell)
+
+# scenes/ and assets/ beside the page as plain files too: the page fetches a scene and the
+# files it references over HTTP (web/files.js), so build/web is a complete static site
+# (tools/site.sh copies it for GitHub Pages; the dev server serves the source tree instead).
+add_custom_target(pathtracer_web_files ALL
+  COMMAND ${CMAKE_COMMAND} -E copy_directory "${CMAKE_SOURCE_DIR}/scenes" "${CMAKE_BINARY_DIR}/scenes"
+  COMMAND ${CMAKE_COMMAND} -E copy_directory "${CMAKE_SOURCE_DIR}/assets" "${CMAKE_BINARY_DIR}/assets"
+  COMMENT "Copying scenes/ and assets/ beside the page")

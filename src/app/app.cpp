@@ -38,12 +38,16 @@ constexpr int kMinBandRows = 4;
 constexpr double kRateWindowMs = 3000.0;
 
 constexpr float kLookDegPerPixel = 0.2f;
+constexpr double kSettleMs = 200.0;  // the camera counts as moving until this long after its last change
 constexpr float kTurnDegPerSecond = 90.0f;
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+}  // namespace
+
+// Also used by app_interaction.cpp.
 std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (const char ch : s) {
@@ -69,7 +73,6 @@ std::string json_number(double v) {
   return buf;
 }
 
-}  // namespace
 
 App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make_unique<Renderer>()) {
   settings_.sample_limit = options_.sample_limit;
@@ -84,14 +87,7 @@ App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make
     const std::string fallback = AppOptions{}.scene;
     if (options_.scene != fallback && load_scene(fallback)) error_ = why;
   }
-  // A view from a link.
-  Camera cam = renderer_->camera();
-  if (options_.camera_position) cam.position = *options_.camera_position;
-  if (options_.camera_yaw_pitch) {
-    cam.yaw = options_.camera_yaw_pitch->x;
-    cam.pitch = std::clamp(options_.camera_yaw_pitch->y, -89.0f, 89.0f);
-  }
-  renderer_->set_camera(cam);
+  // A view from a link: its camera is applied when the first scene is (apply_scene).
   if (options_.bounces) settings_.max_bounces = std::clamp(*options_.bounces, 1, 16);
   if (options_.tonemap) settings_.tonemap = *options_.tonemap;
   if (options_.exposure) {
@@ -126,20 +122,19 @@ void App::scan_scenes() {
   std::sort(scene_files_.begin(), scene_files_.end());
 }
 
-bool App::load_scene(const std::string& path) {
+bool App::load_scene(const std::string& path, bool keep_camera) {
   try {
-    const auto t0 = std::chrono::steady_clock::now();
     Scene s = load_scene_file(path);
-    const auto t1 = std::chrono::steady_clock::now();
-    renderer_->set_scene(s);  // throws before changing anything if the program does not build
-    const Renderer::BvhStats& b = renderer_->bvh_stats();
-    std::printf("scene %s: read in %.0f ms; BVH of %d primitives built in %.0f ms; scene set in %.0f ms\n", path.c_str(),
-                std::chrono::duration<double, std::milli>(t1 - t0).count(), b.primitives, b.build_ms,
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count());
     s.path = path;
-    scene_ = std::move(s);
-    env_panel_.scene_loaded(scene_.environment);
+    std::optional<Camera> camera;
+    if (keep_camera && loads_ > 0) camera = renderer_->camera();
     error_.reset();
+    if (!renderer_->program_ready(s)) {  // compiling in the background: the current scene keeps rendering
+      pending_ = Pending{std::move(s), camera, last_frame_ms_};
+      return true;
+    }
+    pending_.reset();
+    apply_scene(std::move(s), camera);  // throws before changing anything if the program does not build
     return true;
   } catch (const std::exception& e) {
     error_ = e.what();
@@ -158,12 +153,15 @@ void App::frame(int fb_w, int fb_h, double now_ms) {
   const double dt_ms = last_frame_ms_ < 0 ? 0.0 : now_ms - last_frame_ms_;
   last_frame_ms_ = now_ms;
 
-  const int w = options_.width > 0 ? options_.width : fb_w;
-  const int h = options_.height > 0 ? options_.height : fb_h;
-  renderer_->resize(std::max(1, w), std::max(1, h));
-
+  fb_w_ = fb_w;
+  fb_h_ = fb_h;
+  poll_pending_scene(now_ms);
   handle_input(std::min(dt_ms, 100.0) * 1e-3);
+  handle_click();
+  const glm::ivec2 size = render_size(fb_w, fb_h, now_ms);
+  renderer_->resize(size.x, size.y);
   draw_panel();
+  draw_selection_panel(fb_w);
   renderer_->set_settings(settings_);  // restarts only when the estimate changes
   render_passes(now_ms, dt_ms);
   update_auto_exposure();
@@ -191,7 +189,9 @@ void App::handle_input(double dt_s) {
   const float move = step * 60.0f * float(dt_s);
   bool changed = false;
 
-  if (!io.WantCaptureKeyboard) {
+  // Keys only while the canvas has focus and no modifier is held: Ctrl+W, Alt+Left and
+  // friends stay the browser's.
+  if (!io.WantCaptureKeyboard && keys_enabled_ && !io.KeyCtrl && !io.KeyAlt && !io.KeySuper && !io.KeyShift) {
     const auto down = [&](int key) { return io.KeysDown[key]; };
     glm::vec3 d(0.0f);
     if (down(GLFW_KEY_W)) d += up;
@@ -214,10 +214,13 @@ void App::handle_input(double dt_s) {
     }
   }
 
-  // A drag looks around only if it started on the image, not on a panel.
+  // A drag looks around only if it started on the image, not on a panel, and only from
+  // the frame after the press: the move that brought the pointer there is not a drag
+  // (a click that picks an object leaves the view alone).
+  const bool was_dragging = dragging_;
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse) dragging_ = true;
   if (!io.MouseDown[ImGuiMouseButton_Left]) dragging_ = false;
-  if (dragging_ && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+  if (was_dragging && dragging_ && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
     c.yaw += io.MouseDelta.x * kLookDegPerPixel;
     c.pitch -= io.MouseDelta.y * kLookDegPerPixel;
     changed = true;
@@ -231,6 +234,7 @@ void App::handle_input(double dt_s) {
     c.pitch = std::clamp(c.pitch, -89.0f, 89.0f);
     c.yaw = std::fmod(c.yaw + 360.0f, 360.0f);
     renderer_->set_camera(c);
+    moving_until_ms_ = last_frame_ms_ + kSettleMs;
   }
 }
 
@@ -277,7 +281,10 @@ void App::draw_panel() {
   if (ImGui::BeginCombo("scene", label(scene_.path).c_str())) {
     for (const std::string& f : scene_files_) {
       const bool selected = f == scene_.path;
-      if (ImGui::Selectable(label(f).c_str(), selected)) load_scene(f);
+      if (ImGui::Selectable(label(f).c_str(), selected)) {
+        if (options_.request_scene) options_.request_scene(f);
+        else load_scene(f);
+      }
       if (selected) ImGui::SetItemDefaultFocus();
     }
     ImGui::EndCombo();
@@ -318,6 +325,7 @@ void App::draw_panel() {
   ImGui::Text("samples/s  %.1f", samples_per_second_);
   ImGui::Text("elapsed    %.1f s", std::max(0.0, end_ms - restart_ms_) * 1e-3);
   ImGui::Text("resolution %d x %d", renderer_->width(), renderer_->height());
+  draw_view_controls();
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextUnformatted(options_.gl_renderer.c_str());
   ImGui::PopStyleColor();
@@ -376,6 +384,7 @@ void App::present(int fb_w, int fb_h) {
   glClear(GL_COLOR_BUFFER_BIT);
   const int w = renderer_->width(), h = renderer_->height();
   if (w == fb_w && h == fb_h) {
+    image_rect_ = glm::vec4(0.0f, 0.0f, float(w), float(h));
     renderer_->display(0, 0);
     return;
   }
@@ -389,9 +398,12 @@ void App::present(int fb_w, int fb_h) {
   const float s = std::min(float(fb_w) / float(w), float(fb_h) / float(h));
   const int dw = int(float(w) * s), dh = int(float(h) * s);
   const int dx = (fb_w - dw) / 2, dy = (fb_h - dh) / 2;
+  image_rect_ = glm::vec4(float(dx), float(dy), float(dw), float(dh));
+  // A fixed size shows its pixels; a scaled canvas (resolution scale, motion) is smoothed.
+  const GLenum up = options_.width > 0 ? GL_NEAREST : GL_LINEAR;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, present_fbo_.id());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glBlitFramebuffer(0, 0, w, h, dx, dy, dx + dw, dy + dh, GL_COLOR_BUFFER_BIT, s >= 1.0f ? GL_NEAREST : GL_LINEAR);
+  glBlitFramebuffer(0, 0, w, h, dx, dy, dx + dw, dy + dh, GL_COLOR_BUFFER_BIT, s >= 1.0f ? up : GL_LINEAR);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, fb_w, fb_h);
 }
@@ -427,6 +439,17 @@ std::string App::stats_json() const {
   j += ",\"scene\":" + json_string(scene_.path);
   j += ",\"error\":" + (error_ ? json_string(*error_) : std::string("null"));
   j += ",\"renderer\":" + json_string(options_.gl_renderer);
+  j += ",\"loads\":" + std::to_string(loads_);
+  j += ",\"compiling\":" + std::string(pending_ ? "true" : "false");
+  j += ",\"programsCompiled\":" + std::to_string(renderer_->programs_compiled());
+  j += ",\"contextRestores\":" + std::to_string(context_restores_);
+  j += ",\"renderScale\":" + json_number(render_scale_);
+  j += ",\"files\":" + scene_files_json();
+  j += ",\"selected\":" + std::to_string(selected_);
+  if (selected_ >= 0) {
+    const Shape& sh = scene_.shapes[size_t(selected_)];
+    j += ",\"selectedKind\":" + json_string(info(sh.kind).xml) + ",\"selectedLine\":" + std::to_string(sh.line);
+  }
   return j + "}";
 }
 

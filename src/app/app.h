@@ -32,6 +32,10 @@ struct AppOptions {
   std::string gl_renderer;                               // shown in the panel and the stats
   // Hands a finished file to the platform (the page downloads it); unset: no save buttons.
   std::function<void(const std::string& name, const std::vector<uint8_t>& bytes, const char* mime)> save_file;
+  // Fetches a scene chosen in the panel (and the files it references) before it is
+  // loaded: the page stages them over HTTP into its file system, then calls load_scene.
+  // Unset: the panel loads from the file system directly.
+  std::function<void(const std::string& path)> request_scene;
 };
 
 class App {
@@ -51,7 +55,17 @@ class App {
   std::string view_query() const;
   void set_fixed_size(int w, int h);                     // 0, 0: follow the framebuffer
   void set_sample_limit(int n);
-  bool load_scene(const std::string& path);              // false: error() says why
+  // false: error() says why and the current scene stays. keep_camera: a reload of an
+  // edited scene keeps the view. A scene whose program is still compiling in the
+  // background (KHR_parallel_shader_compile) replaces the current one when it is ready.
+  bool load_scene(const std::string& path, bool keep_camera = false);
+  const Scene& scene() const { return scene_; }
+  std::string scene_files_json() const;                  // Scene::files of the current scene
+  // The platform: keys move the camera only while the canvas has keyboard focus.
+  void set_keyboard_enabled(bool on) { keys_enabled_ = on; }
+  // The GL context was lost and is back: every GL object is re-created (the scene model,
+  // camera and settings are kept) and rendering starts again.
+  void context_restored();
   const std::vector<float>& radiance_snapshot();         // RGBA float, rows bottom to top
   const std::vector<uint8_t>& display_snapshot();        // tone-mapped RGBA8, rows bottom to top
   const Renderer& renderer() const { return *renderer_; }
@@ -63,6 +77,14 @@ class App {
   void render_passes(double now_ms, double dt_ms);
   void present(int fb_w, int fb_h);
   void scan_scenes();
+  // app_interaction.cpp: scene switching, picking and the selection panel, render size.
+  void apply_scene(Scene scene, const std::optional<Camera>& camera);
+  void poll_pending_scene(double now_ms);
+  void handle_click();
+  void draw_selection_panel(int fb_w);
+  void draw_view_controls();
+  glm::ivec2 render_size(int fb_w, int fb_h, double now_ms) const;
+  glm::vec2 image_pixel(glm::vec2 mouse) const;  // device pixels, y down -> image pixels, y up
 
   AppOptions options_;
   std::unique_ptr<Renderer> renderer_;
@@ -100,6 +122,29 @@ class App {
   // Offscreen target used when the render size differs from the framebuffer size.
   Texture present_tex_;
   Framebuffer present_fbo_;
+
+  // A loaded scene waiting for its program; applied by poll_pending_scene.
+  struct Pending {
+    Scene scene;
+    std::optional<Camera> camera;  // the view to keep, else the scene's
+    double since_ms = -1.0;
+  };
+  std::optional<Pending> pending_;
+  int loads_ = 0, context_restores_ = 0;
+
+  // Picking: a left press and release on the image without moving selects.
+  int selected_ = -1;
+  glm::vec2 press_pos_{0.0f};
+  bool press_on_image_ = false;
+  bool keys_enabled_ = true;
+
+  // Resolution: the render size is render_scale_ x the canvas; while the camera moves
+  // (until kSettleMs after the last change) it is kMotionScale of that, refined at full
+  // size when it stops.
+  float render_scale_ = 1.0f;
+  double moving_until_ms_ = -1.0;
+  int fb_w_ = 1, fb_h_ = 1;
+  glm::vec4 image_rect_{0.0f};  // where present() put the image in the framebuffer (x, y, w, h; y up)
 
   std::vector<float> snapshot_;
   std::vector<uint8_t> display_snapshot_;

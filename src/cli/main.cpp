@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (!std::strcmp(argv[1], "render")) return run_render(parse_options(argc - 2, argv + 2, false));
+    if (!std::strcmp(argv[1], "watch")) return run_watch(parse_options(argc - 2, argv + 2, false));
     if (!std::strcmp(argv[1], "bench")) return run_bench(parse_options(argc - 2, argv + 2, true));
     if (!std::strcmp(argv[1], "plot")) return run_plot(argc - 2, argv + 2);
     usage_error(std::string("unknown command ") + argv[1]);

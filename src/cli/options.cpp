@@ -11,6 +11,7 @@ namespace pt::cli {
 
 const char* const kUsage =
     "usage: pathtracer render SCENE.xml [options] [--spp N] [--out FILE.png|.hdr|.pfm] [--exposure X|auto]\n"
+    "       pathtracer watch SCENE.xml [options] [--spp N] [--out FILE.png|.hdr|.pfm]  (re-renders on every change)\n"
     "       pathtracer bench SCENE.xml [options] --seconds S (--reference REF.pfm|.hdr | --reference-value V)\n"
     "                        [--csv FILE] [--label NAME]\n"
     "       pathtracer plot OUT.svg (--x seconds|spp) A.csv [B.csv ...]\n"
@@ -28,6 +29,8 @@ const char* const kUsage =
     "render: --spp N (default 64), or until --seconds S if that comes first (references);\n"
     "        --out .png is tone-mapped, .hdr/.pfm linear radiance (--out may repeat);\n"
     "        --exposure X multiplies before the tone map, 'auto' maps the log-average to 0.18\n"
+    "watch:  re-loads SCENE.xml when it or a file it references changes and re-renders to --out,\n"
+    "        replaced atomically at 1, 2, 4, ... spp; a broken edit prints file:line and keeps the last image\n"
     "bench:  renders for S seconds; at 1, 2, 4, ... spp records time, relMSE and RMSE\n"
     "        against the reference (same size) in CSV; prints samples/s and rays/s\n"
     "Environment: PT_EGL_SOFTWARE=1 forces Mesa's software renderer.\n";

@@ -17,7 +17,7 @@ struct Options {
   bool auto_exposure = false;
   RenderSettings settings;
   // bench
-  double seconds = 0;  // bench: duration (default 10); render: optional time limit
+  double seconds = 0;  // bench: duration (default 10); render, watch: optional time limit
   std::string reference;         // .pfm or .hdr
   double reference_value = -1;   // a constant (analytic) reference instead
   std::string csv, label;
@@ -30,6 +30,7 @@ Options parse_options(int argc, char** argv, bool bench);
 Scene load_scene(const Options& o);
 
 int run_render(const Options& o);
+int run_watch(const Options& o);
 int run_bench(const Options& o);
 int run_plot(int argc, char** argv);
 

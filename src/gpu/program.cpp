@@ -1,10 +1,13 @@
 #include "gpu/program.h"
 
-#include <chrono>
+#include <cstring>
+#include <utility>
 #include <vector>
 
 namespace pt {
 namespace {
+
+constexpr GLenum kCompletionStatus = 0x91B1;  // GL_COMPLETION_STATUS_KHR
 
 // The info log of a shader or program object (the two GL families share a shape).
 template <typename GetIv, typename GetLog>
@@ -16,63 +19,107 @@ std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
   return log.data();
 }
 
-GLuint compile(GLenum type, const ShaderSource& src) {
+GLuint start_shader(GLenum type, const ShaderSource& src) {
   GLuint s = glCreateShader(type);
   const char* text = src.text.c_str();
   glShaderSource(s, 1, &text, nullptr);
   glCompileShader(s);
+  return s;
+}
+
+// Throws with the mapped log if the shader did not compile.
+void check_shader(GLuint s, const ShaderSource& src) {
   GLint ok = 0;
   glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    const std::string log = info_log(s, glGetShaderiv, glGetShaderInfoLog);
-    glDeleteShader(s);
-    throw GlError("GLSL compile error:\n" + src.map_log(log));
-  }
-  return s;
+  if (!ok) throw GlError("GLSL compile error:\n" + src.map_log(info_log(s, glGetShaderiv, glGetShaderInfoLog)));
 }
 
 }  // namespace
 
-Program::Program(const ShaderSource& vs, const ShaderSource& fs) {
-  const auto t0 = std::chrono::steady_clock::now();
-  GLuint v = compile(GL_VERTEX_SHADER, vs);
-  GLuint f = 0;
-  try {
-    f = compile(GL_FRAGMENT_SHADER, fs);
-  } catch (...) {
-    glDeleteShader(v);
-    throw;
-  }
-  id_ = glCreateProgram();
-  glAttachShader(id_, v);
-  glAttachShader(id_, f);
-  glLinkProgram(id_);
-  glDeleteShader(v);
-  glDeleteShader(f);
+bool Program::parallel_compile() {
+  static const bool has = [] {
+    GLint n = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &n);
+    for (GLint i = 0; i < n; ++i) {
+      const char* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)));
+      if (e && !std::strcmp(e, "GL_KHR_parallel_shader_compile")) return true;
+    }
+    return false;
+  }();
+  return has;
+}
+
+Program::Program(const ShaderSource& vs, const ShaderSource& fs) : Program(start(vs, fs)) { finish(); }
+
+Program Program::start(const ShaderSource& vs, const ShaderSource& fs) {
+  Program p;
+  p.started_ = std::chrono::steady_clock::now();
+  p.vs_src_ = vs;
+  p.fs_src_ = fs;
+  p.vs_ = start_shader(GL_VERTEX_SHADER, vs);
+  p.fs_ = start_shader(GL_FRAGMENT_SHADER, fs);
+  p.id_ = glCreateProgram();
+  glAttachShader(p.id_, p.vs_);
+  glAttachShader(p.id_, p.fs_);
+  glLinkProgram(p.id_);
+  return p;
+}
+
+bool Program::completed() const {
+  if (!vs_ || !parallel_compile()) return true;  // finished, or finish() is the only way to know
+  GLint done = 0;
+  glGetProgramiv(id_, kCompletionStatus, &done);
+  return done != 0;
+}
+
+void Program::finish() {
+  if (!vs_) return;
+  const GLuint v = std::exchange(vs_, 0u), f = std::exchange(fs_, 0u);
   GLint ok = 0;
   glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+  std::string error;
   if (!ok) {
-    const std::string log = info_log(id_, glGetProgramiv, glGetProgramInfoLog);
+    // The shaders' own logs first (a compile error names the snippet file), else the link log.
+    try {
+      check_shader(v, vs_src_);
+      check_shader(f, fs_src_);
+      error = "GLSL link error:\n" + fs_src_.map_log(info_log(id_, glGetProgramiv, glGetProgramInfoLog));
+    } catch (const GlError& e) {
+      error = e.what();
+    }
+  }
+  glDeleteShader(v);
+  glDeleteShader(f);
+  vs_src_ = fs_src_ = ShaderSource{};
+  if (!error.empty()) {
     glDeleteProgram(id_);
     id_ = 0;
-    throw GlError("GLSL link error:\n" + fs.map_log(log));
+    throw GlError(error);
   }
-  compile_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  compile_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started_).count();
 }
 
 Program::~Program() {
+  if (vs_) glDeleteShader(vs_), glDeleteShader(fs_);
   if (id_) glDeleteProgram(id_);
 }
 
-Program::Program(Program&& o) noexcept : id_(o.id_), locs_(std::move(o.locs_)), compile_ms_(o.compile_ms_) { o.id_ = 0; }
+Program::Program(Program&& o) noexcept
+    : id_(std::exchange(o.id_, 0u)), vs_(std::exchange(o.vs_, 0u)), fs_(std::exchange(o.fs_, 0u)),
+      vs_src_(std::move(o.vs_src_)), fs_src_(std::move(o.fs_src_)), started_(o.started_),
+      locs_(std::move(o.locs_)), compile_ms_(o.compile_ms_) {}
 
 Program& Program::operator=(Program&& o) noexcept {
   if (this != &o) {
-    if (id_) glDeleteProgram(id_);
-    id_ = o.id_;
+    Program old(std::move(*this));  // deletes what this held, on return
+    id_ = std::exchange(o.id_, 0u);
+    vs_ = std::exchange(o.vs_, 0u);
+    fs_ = std::exchange(o.fs_, 0u);
+    vs_src_ = std::move(o.vs_src_);
+    fs_src_ = std::move(o.fs_src_);
+    started_ = o.started_;
     locs_ = std::move(o.locs_);
     compile_ms_ = o.compile_ms_;
-    o.id_ = 0;
   }
   return *this;
 }

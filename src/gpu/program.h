@@ -1,6 +1,7 @@
 // A linked GL program with cached uniform locations. Compile and link errors throw with
 // the log mapped back to the GLSL snippet file and its own line.
 #pragma once
+#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -20,7 +21,15 @@ class GlError : public std::runtime_error {
 class Program {
  public:
   Program() = default;
-  Program(const ShaderSource& vs, const ShaderSource& fs);
+  Program(const ShaderSource& vs, const ShaderSource& fs);  // start() then finish()
+  // Hands the sources to the driver and returns without asking for the result: with
+  // KHR_parallel_shader_compile the driver compiles in the background (a page keeps
+  // drawing frames meanwhile); completed() says when finish() will not block.
+  static Program start(const ShaderSource& vs, const ShaderSource& fs);
+  bool completed() const;
+  // Waits for the result; throws GlError with the mapped log if compiling or linking failed.
+  void finish();
+  static bool parallel_compile();  // the driver offers KHR_parallel_shader_compile
   ~Program();
   Program(Program&& o) noexcept;
   Program& operator=(Program&& o) noexcept;
@@ -39,6 +48,9 @@ class Program {
 
  private:
   GLuint id_ = 0;
+  GLuint vs_ = 0, fs_ = 0;  // until finish(): their logs name the snippet files
+  ShaderSource vs_src_, fs_src_;
+  std::chrono::steady_clock::time_point started_;
   std::unordered_map<std::string, GLint> locs_;
   double compile_ms_ = 0;
 };

@@ -36,6 +36,32 @@ EM_JS(char*, pt_js_gl_renderer, (), {
   return ptr;
 });
 
+// WebGL context loss (web/index.html tracks the events): 0 usable, 1 lost, 2 restored
+// and not yet rebuilt.
+EM_JS(int, pt_js_context_state, (), { return Module.ptContextState | 0; });
+EM_JS(void, pt_js_context_rebuilt, (), { Module.ptContextState = 0; });
+
+// WebGL extensions are off until asked for: ask again on a restored context (Emscripten
+// enables its defaults only when it creates one). KHR_parallel_shader_compile lets the
+// driver compile in the background (gpu/program.cpp polls it).
+EM_JS(void, pt_js_enable_extensions, (), {
+  const gl = Module.ctx;
+  for (const name of ["EXT_color_buffer_float", "EXT_color_buffer_half_float", "EXT_float_blend",
+                      "OES_texture_float_linear", "KHR_parallel_shader_compile", "WEBGL_debug_renderer_info",
+                      "EXT_disjoint_timer_query_webgl2"])
+    gl.getExtension(name);
+});
+
+// Keys drive the camera only while the canvas has keyboard focus.
+EM_JS(int, pt_js_canvas_focused, (), { return document.activeElement === Module.canvas ? 1 : 0; });
+
+// The page fetches a scene and the files it references, then loads it (web/files.js).
+EM_JS(void, pt_js_request_scene, (const char* path), {
+  const p = UTF8ToString(path);
+  if (typeof ptOpenScene === "function") ptOpenScene(p);
+  else Module._pt_load_scene(path);
+});
+
 namespace {
 
 GLFWwindow* g_window = nullptr;
@@ -62,6 +88,16 @@ void scroll_callback(GLFWwindow* window, double dx, double dy) {
 }
 
 void frame() {
+  const int context = pt_js_context_state();
+  if (context == 1) return;  // lost: nothing can be drawn until the browser restores it
+  if (context == 2) {
+    pt_js_enable_extensions();
+    ImGui_ImplOpenGL3_Shutdown();  // its objects belong to the lost context
+    ImGui_ImplOpenGL3_Init("#version 300 es");
+    g_app->context_restored();
+    pt_js_context_rebuilt();
+  }
+  g_app->set_keyboard_enabled(pt_js_canvas_focused() != 0);
   int w = 0, h = 0;
   sync_canvas_size(&w, &h);
   ImGui_ImplOpenGL3_NewFrame();
@@ -153,6 +189,15 @@ EMSCRIPTEN_KEEPALIVE void pt_set_sample_limit(int n) {
 
 EMSCRIPTEN_KEEPALIVE int pt_load_scene(const char* path) { return g_app && g_app->load_scene(path) ? 1 : 0; }
 
+// Loads again keeping the camera: the reload loop after an edit.
+EMSCRIPTEN_KEEPALIVE int pt_reload_scene(const char* path) { return g_app && g_app->load_scene(path, true) ? 1 : 0; }
+
+// The current scene's file and the files it references, as a JSON array of paths.
+EMSCRIPTEN_KEEPALIVE const char* pt_scene_files() {
+  g_stats = g_app ? g_app->scene_files_json() : std::string("[]");
+  return g_stats.c_str();
+}
+
 // RGBA float radiance of the current estimate; *count receives the number of floats.
 EMSCRIPTEN_KEEPALIVE const float* pt_radiance(int* count) {
   if (!g_app) return *count = 0, nullptr;
@@ -188,12 +233,14 @@ int main(int argc, char** argv) {
   sync_canvas_size(&w, &h);
   init_imgui();
 
+  pt_js_enable_extensions();
   char* renderer = pt_js_gl_renderer();
   options.gl_renderer = renderer ? renderer : "";
   options.save_file = [](const std::string& name, const std::vector<uint8_t>& bytes, const char* mime) {
     pt_download(bytes.data(), int(bytes.size()), name.c_str(), mime);
   };
   std::free(renderer);
+  options.request_scene = [](const std::string& path) { pt_js_request_scene(path.c_str()); };
   try {
     g_app = std::make_unique<pt::App>(options);
   } catch (const std::exception& e) {

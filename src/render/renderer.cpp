@@ -51,15 +51,35 @@ Renderer::~Renderer() {
   if (vao_) glDeleteVertexArrays(1, &vao_);
 }
 
-void Renderer::select_program() {
-  Features f = features_;
-  f.mode = settings_.mode;
+// Starts (or finds) the program for f; true once it is built (a build in progress does
+// not block where KHR_parallel_shader_compile exists).
+bool Renderer::program_ready_for(const Features& f) {
   auto& slot = cache_[f.key()];
   if (!slot) {
     auto c = std::make_unique<CachedProgram>();
     c->source = generate_integrator(f);
-    c->program = Program(fullscreen_vertex(), c->source);
+    c->program = Program::start(fullscreen_vertex(), c->source);
     slot = std::move(c);
+  }
+  return slot->program.completed();
+}
+
+bool Renderer::program_ready(const Scene& scene) {
+  Features f = Features::of(scene);
+  f.mode = settings_.mode;
+  return program_ready_for(f);
+}
+
+void Renderer::select_program() {
+  Features f = features_;
+  f.mode = settings_.mode;
+  program_ready_for(f);
+  auto& slot = cache_[f.key()];
+  try {
+    slot->program.finish();
+  } catch (...) {
+    cache_.erase(f.key());  // a failed build is not cached: the next try reports it again
+    throw;
   }
   integrator_ = &slot->program;
   source_ = &slot->source;

@@ -40,6 +40,10 @@ class Renderer {
 
   // Uploads the scene's data; compiles a program only for a feature set not seen before.
   void set_scene(const Scene& scene);
+  // Starts building the program for the scene's kinds without waiting for the driver;
+  // true when set_scene(scene) will not block on it (always, without
+  // KHR_parallel_shader_compile). A page polls this once a frame and keeps drawing.
+  bool program_ready(const Scene& scene);
   void set_camera(const Camera& camera);
   void set_settings(const RenderSettings& s);
   void resize(int width, int height);
@@ -92,6 +96,7 @@ class Renderer {
     ShaderSource source;
     Program program;
   };
+  bool program_ready_for(const Features& f);
   void select_program();  // the cached (or newly built) program for features_ + settings_.mode
   void update_sh();       // the environment's SH coefficients, when the mode needs them
   Features features_;

@@ -98,6 +98,9 @@ struct Environment {
 
 struct Scene {
   std::string path;
+  // The scene file and every file it references (meshes, images), as the loader opened
+  // them: what `pathtracer watch` and the page's reload loop watch for changes.
+  std::vector<std::string> files;
   Camera camera;
   Environment environment;
   bool dot_weight = true;  // SceneLevel dotWeight: cosine-weighted (true) or uniform diffuse sampling

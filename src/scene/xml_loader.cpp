@@ -185,9 +185,12 @@ struct Loader {
   Scene scene;
   std::map<std::string, std::vector<GltfPart>> mesh_files;  // loaded once per path
 
-  // A path in a scene file is relative to the scene file's folder.
-  std::string resolve_path(const std::string& p) const {
-    return !p.empty() && p[0] == '/' ? p : directory_of(file) + "/" + p;
+  // A path in a scene file is relative to the scene file's folder. Every referenced file
+  // passes through here, so it is also where the dependency list is collected.
+  std::string resolve_path(const std::string& p) {
+    std::string r = !p.empty() && p[0] == '/' ? p : directory_of(file) + "/" + p;
+    scene.files.push_back(r);
+    return r;
   }
 
   std::shared_ptr<const EnvImage> load_env_image(XmlAttrs& a, const std::string& path) {
@@ -491,6 +494,7 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
   Loader l;
   l.file = path;
   l.scene.path = path;
+  l.scene.files = {path};
   l.root(doc.RootElement());
   return std::move(l.scene);
 }

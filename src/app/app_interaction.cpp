@@ -1,0 +1,169 @@
+// The App's interaction beyond the main panel: switching scenes (and waiting for a
+// program compiling in the background), picking and editing the selected object, the
+// render size (resolution scale, reduced while the camera moves), and re-creating every
+// GL object after a lost context.
+#include <algorithm>
+#include <cmath>
+
+#include <imgui.h>
+
+#include "app/app.h"
+
+#include <chrono>
+#include <cstdio>
+#include "app/picking.h"
+#include "app/selection.h"
+
+namespace pt {
+
+std::string json_string(const std::string& s);  // app.cpp
+
+namespace {
+
+constexpr float kMotionScale = 0.5f;       // of the render size, per axis, while the camera moves
+constexpr float kClickSlopPixels = 4.0f;   // a press and release closer than this is a click, not a drag
+
+}  // namespace
+
+void App::apply_scene(Scene scene, const std::optional<Camera>& camera) {
+  const auto t0 = std::chrono::steady_clock::now();
+  renderer_->set_scene(scene);  // throws before changing anything if the program does not build
+  const Renderer::BvhStats& b = renderer_->bvh_stats();
+  std::printf("scene %s: BVH of %d primitives built in %.0f ms; scene set in %.0f ms\n", scene.path.c_str(), b.primitives,
+              b.build_ms, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  env_panel_.scene_loaded(scene.environment);
+  if (camera) {
+    renderer_->set_camera(*camera);
+  } else if (loads_ == 0 && (options_.camera_position || options_.camera_yaw_pitch)) {
+    Camera c = renderer_->camera();  // the first scene: a view from a link
+    if (options_.camera_position) c.position = *options_.camera_position;
+    if (options_.camera_yaw_pitch) {
+      c.yaw = options_.camera_yaw_pitch->x;
+      c.pitch = std::clamp(options_.camera_yaw_pitch->y, -89.0f, 89.0f);
+    }
+    renderer_->set_camera(c);
+  }
+  // A reload keeps the selection when the object is still there.
+  if (selected_ >= int(scene.shapes.size()) || scene.path != scene_.path) selected_ = -1;
+  scene_ = std::move(scene);
+  ++loads_;
+}
+
+void App::poll_pending_scene(double now_ms) {
+  if (!pending_) return;
+  if (pending_->since_ms < 0.0) pending_->since_ms = now_ms;
+  try {
+    if (!renderer_->program_ready(pending_->scene)) return;
+    Pending p = std::move(*pending_);
+    pending_.reset();
+    apply_scene(std::move(p.scene), p.camera);
+  } catch (const std::exception& e) {
+    pending_.reset();
+    error_ = e.what();
+  }
+}
+
+std::string App::scene_files_json() const {
+  std::string j = "[";
+  for (const std::string& f : scene_.files) j += (j.size() > 1 ? "," : "") + json_string(f);
+  return j + "]";
+}
+
+void App::context_restored() {
+  // Every GL name held is stale: drop the offscreen target and the renderer (deleting
+  // stale names does nothing), then build them again from the kept scene model.
+  const Camera camera = renderer_->camera();
+  present_fbo_ = Framebuffer();
+  present_tex_ = Texture();
+  renderer_ = std::make_unique<Renderer>();
+  renderer_->set_settings(settings_);
+  if (loads_ > 0) pending_ = Pending{scene_, camera, last_frame_ms_};
+  ++context_restores_;
+}
+
+glm::ivec2 App::render_size(int fb_w, int fb_h, double now_ms) const {
+  glm::vec2 size = options_.width > 0 ? glm::vec2(options_.width, options_.height)
+                                      : glm::vec2(float(fb_w), float(fb_h)) * render_scale_;
+  if (now_ms < moving_until_ms_) size *= kMotionScale;
+  return glm::max(glm::ivec2(glm::round(size)), glm::ivec2(1));
+}
+
+glm::vec2 App::image_pixel(glm::vec2 mouse) const {
+  const glm::vec2 gl(mouse.x, float(fb_h_) - mouse.y);  // y up, as gl_FragCoord
+  const glm::vec2 rel = (gl - glm::vec2(image_rect_.x, image_rect_.y)) / glm::vec2(image_rect_.z, image_rect_.w);
+  return rel * glm::vec2(renderer_->width(), renderer_->height());
+}
+
+void App::handle_click() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    press_on_image_ = !io.WantCaptureMouse;
+    press_pos_ = glm::vec2(io.MousePos.x, io.MousePos.y);
+  }
+  if (!ImGui::IsMouseReleased(ImGuiMouseButton_Left) || !press_on_image_) return;
+  press_on_image_ = false;
+  const glm::vec2 pos(io.MousePos.x, io.MousePos.y);
+  if (glm::length(pos - press_pos_) > kClickSlopPixels) return;  // a drag looked around
+  const glm::vec2 px = image_pixel(pos);
+  const glm::ivec2 size(renderer_->width(), renderer_->height());
+  if (px.x < 0.0f || px.y < 0.0f || px.x >= float(size.x) || px.y >= float(size.y)) return;
+  selected_ = pick(scene_, renderer_->camera(), px, size);
+}
+
+// The selected object's transform and material: value edits re-upload the scene's data
+// and restart; the kinds do not change, so the program is reused.
+void App::draw_selection_panel(int fb_w) {
+  if (selected_ < 0 || selected_ >= int(scene_.shapes.size())) return;
+  ImGui::SetNextWindowPos(ImVec2(float(fb_w) - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+  bool open = true;
+  ImGui::Begin("Selection", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+  ImGui::PushItemWidth(ImGui::GetFontSize() * 12.0f);
+  Shape& sh = scene_.shapes[size_t(selected_)];
+  Material& m = scene_.materials[size_t(sh.material)];
+  ImGui::Text("%s #%d (line %d)", info(sh.kind).xml, selected_, sh.line);
+  ImGui::Text("material: %s", info(m.kind).xml);
+  const float speed = 0.005f * std::max(1.0f, glm::length(renderer_->camera().position));
+  bool edited = false;
+  glm::vec3 p = shape_position(sh);
+  if (ImGui::DragFloat3("position", &p.x, speed, 0.0f, 0.0f, "%.2f")) {
+    move_shape(scene_, selected_, p);
+    edited = true;
+  }
+  if (sh.kind == ShapeKind::Sphere) {
+    float r = sh.radius;
+    if (ImGui::DragFloat("radius", &r, speed * 0.2f, 1e-4f, 1e6f, "%.3f")) {
+      set_sphere_radius(scene_, selected_, r);
+      edited = true;
+    }
+  }
+  const MaterialFields f = material_fields(m.kind);
+  if (f.tint) edited |= ImGui::ColorEdit3("colour", &m.tint.x);
+  if (m.kind == MaterialKind::Emit) edited |= ImGui::DragFloat3("emission", &m.emission.x, 0.1f, 0.0f, 1e4f);
+  if (f.roughness) edited |= ImGui::SliderFloat("roughness", &m.glossiness, 0.0f, 1.0f);
+  if (f.ior) edited |= ImGui::SliderFloat("ior", m.kind == MaterialKind::Transmit ? &m.inner_ior : &m.ior.x, 1.0f, 3.0f);
+  if (sh.light >= 0) ImGui::TextDisabled("the scene's light %d", sh.light);
+  ImGui::PopItemWidth();
+  ImGui::End();
+  if (!open) selected_ = -1;
+  if (edited) {
+    const Camera cam = renderer_->camera();
+    renderer_->set_scene(scene_);  // the same kinds: the cached program is reused
+    renderer_->set_camera(cam);
+  }
+}
+
+// Resolution scale, the sample target's estimated time, and a compiling indicator.
+void App::draw_view_controls() {
+  if (options_.width <= 0) ImGui::SliderFloat("resolution scale", &render_scale_, 0.25f, 1.0f, "%.2f");
+  const int n = renderer_->samples(), limit = settings_.sample_limit;
+  if (limit > 0 && n < limit && samples_per_second_ > 0.0)
+    ImGui::Text("remaining  %.1f s to %d samples", double(limit - n) / samples_per_second_, limit);
+  if (pending_) {
+    // A spinner: the page keeps drawing while the driver compiles in the background.
+    const char* frames = "|/-\\";
+    const double s = std::max(0.0, last_frame_ms_ - pending_->since_ms) * 1e-3;
+    ImGui::Text("compiling shader %c %.1f s", frames[int(last_frame_ms_ / 120.0) & 3], s);
+  }
+}
+
+}  // namespace pt
