@@ -236,7 +236,7 @@ async function viewChecks(context, url) {
   check("the canvas and render follow the device pixel ratio", canvas[1] === 2 && canvas[0] === 2 * 640 && s.width === canvas[0],
         `canvas ${canvas[0]} at dpr ${canvas[1]}, render ${s.width}x${s.height}`);
   // The resolution-scale slider (main panel, under "resolution"), clicked near its left end.
-  await page.mouse.click(20, 275);  // (no Light section in this scene)
+  await page.mouse.click(20, 321);  // (no Light section in this scene; below the mode combo)
   await until(page, () => window.ptStats().renderScale < 0.5, null, 10000).catch(() => {});
   await until(page, () => window.ptStats().samples >= 1, null, 30000).catch(() => {});
   s = await stats(page);
