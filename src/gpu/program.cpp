@@ -21,6 +21,7 @@ GLuint compile(GLenum type, const ShaderSource& src) {
   const char* text = src.text.c_str();
   glShaderSource(s, 1, &text, nullptr);
   glCompileShader(s);
+  PT_GL_CHECK("glShaderSource/glCompileShader");
   GLint ok = 0;
   glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
   if (!ok) {
@@ -47,6 +48,7 @@ Program::Program(const ShaderSource& vs, const ShaderSource& fs) {
   glAttachShader(id_, v);
   glAttachShader(id_, f);
   glLinkProgram(id_);
+  PT_GL_CHECK("glAttachShader/glLinkProgram");
   glDeleteShader(v);
   glDeleteShader(f);
   GLint ok = 0;

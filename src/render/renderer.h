@@ -65,6 +65,10 @@ class Renderer {
   const ShaderSource& integrator_source() const { return *source_; }
   double compile_ms() const { return integrator_ ? integrator_->compile_ms() : 0.0; }
   size_t programs_compiled() const { return cache_.size(); }
+  // What this context allows (queried in the constructor). Lowering them makes the
+  // renderer refuse what a smaller GPU would (tests; nothing else should call it).
+  const GlLimits& limits() const { return limits_; }
+  void override_limits(const GlLimits& l) { limits_ = l; }
 
   // Linear radiance (RGB) and mean squared luminance (A), rows bottom to top.
   std::vector<float> read_radiance() const;
@@ -107,6 +111,7 @@ class Renderer {
   glm::vec3 env_color_{0.5f};
   Camera camera_;
   RenderSettings settings_;
+  GlLimits limits_;
 };
 
 }  // namespace pt
