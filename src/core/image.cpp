@@ -101,9 +101,9 @@ bool write_pfm(const std::string& path, int w, int h, const std::vector<float>& 
   std::string bytes = "PF\n" + std::to_string(w) + " " + std::to_string(h) + "\n-1.0\n";
   const size_t header = bytes.size();
   bytes.resize(header + size_t(w) * h * 12);
-  float* out = reinterpret_cast<float*>(&bytes[header]);
+  // The header's length is arbitrary: the floats are unaligned, so they are copied.
   for (size_t i = 0; i < size_t(w) * h; ++i)  // PFM rows run bottom to top, as GL's do
-    for (size_t c = 0; c < 3; ++c) out[i * 3 + c] = rgba[i * 4 + c];
+    for (size_t c = 0; c < 3; ++c) std::memcpy(&bytes[header + (i * 3 + c) * 4], &rgba[i * 4 + c], 4);
   return write_file_atomic(path, bytes.data(), bytes.size());
 }
 
