@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the project needs on Debian bookworm, only what is missing.
-#   tools/deps.sh native   compilers, GL/EGL (Mesa llvmpipe), header libraries, Catch2
+#   tools/deps.sh native   compilers, GL/EGL (Mesa llvmpipe), header libraries, Catch2,
+#                          clang + libclang-rt-dev (libFuzzer and clang's sanitizer runtimes)
 #   tools/deps.sh web      + Emscripten, Dear ImGui / tinyxml2 sources (Debian source packages)
 #   tools/deps.sh test     + Chromium and playwright-core (npm, test tooling only)
 # Safe to re-run; a no-op when everything is present.
@@ -10,7 +11,7 @@ want="${1:-test}"
 
 native_pkgs=(cmake ninja-build g++ ccache pkg-config libglm-dev libtinyxml2-dev libstb-dev
              catch2 libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libgbm1 libtinyobjloader-dev
-             libtinygltf-dev nlohmann-json3-dev)
+             libtinygltf-dev nlohmann-json3-dev clang libclang-rt-dev)
 web_pkgs=(emscripten dpkg-dev)
 test_pkgs=(chromium nodejs npm)
 

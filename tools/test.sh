@@ -2,6 +2,8 @@
 # README command (2): install what is missing, build, run every test.
 #   bash tools/test.sh            native unit + GPU tests (llvmpipe), CLI tests, browser test
 #   PT_SKIP_BROWSER=1 bash tools/test.sh   native tests only
+#   PT_SKIP_SANITIZERS=1                    skip the ASan/UBSan suite and the fuzzers
+#   PT_FUZZ_SECONDS=N                       seconds per fuzz target (default 30)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 start=$(date +%s)
@@ -11,6 +13,18 @@ cmake --preset native >/dev/null
 cmake --build --preset native
 echo "== native tests (GL: Mesa llvmpipe unless a GPU is present)"
 ctest --preset native -j2
+if [[ -z "${PT_SKIP_SANITIZERS:-}" ]]; then
+  echo "== native tests under AddressSanitizer + UndefinedBehaviorSanitizer (leaks included), GL checks on"
+  t0=$(date +%s)
+  cmake --preset native-asan >/dev/null
+  cmake --build --preset native-asan
+  ctest --preset native-asan -j2
+  echo "== sanitizer build and suite: $(( $(date +%s) - t0 )) s"
+  echo "== fuzzers (docs/reliability.md)"
+  t0=$(date +%s)
+  PT_FUZZ_SECONDS="${PT_FUZZ_SECONDS:-30}" bash tools/fuzz.sh
+  echo "== fuzz build and runs: $(( $(date +%s) - t0 )) s"
+fi
 if [[ -z "${PT_SKIP_BROWSER:-}" ]]; then
   echo "== web build"
   export NODE_PATH=/usr/share/nodejs

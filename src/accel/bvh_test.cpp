@@ -141,5 +141,9 @@ TEST_CASE("BVH: build time for one million triangles", "[bvh][speed]") {
   std::printf("BVH build: %zu triangles in %.3f s of CPU time (one core), %zu nodes, depth %d\n", boxes.size(), s, bvh.nodes.size(),
               bvh.depth);
   check_structure(bvh, boxes, BvhBuildOptions{});
+#if defined(__SANITIZE_ADDRESS__)
+  WARN("AddressSanitizer build: the 2 s target applies to the release build only");
+#else
   CHECK(s < 2.0);  // the target for one million triangles natively
+#endif
 }

@@ -1,8 +1,12 @@
 #include "core/file_io.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace pt {
 
@@ -14,16 +18,28 @@ std::optional<std::string> read_file(const std::string& path) {
   return ss.str();
 }
 
+// Nothing is lost: the new bytes go to a fresh temporary file in the same folder (so the
+// rename never crosses file systems), are flushed to disk, then renamed over `path` in
+// one step. A reader, a crash or a full disk sees the old file or the new one, never a
+// part; two writers do not share a temporary name.
 bool write_file_atomic(const std::string& path, const void* data, size_t size) {
-  const std::string tmp = path + ".tmp";
-  FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) return false;
-  const bool ok = std::fwrite(data, 1, size, f) == size;
-  if (std::fclose(f) != 0 || !ok) {
+  const std::string dir = directory_of(path);
+  std::string tmp = dir + "/." + path.substr(path.find_last_of('/') + 1) + ".XXXXXX";
+  const int fd = mkstemp(tmp.data());
+  if (fd < 0) return false;
+  const char* p = static_cast<const char*>(data);
+  size_t done = 0;
+  while (done < size) {
+    const ssize_t n = ::write(fd, p + done, size - done);
+    if (n <= 0) break;
+    done += size_t(n);
+  }
+  const bool ok = done == size && ::fsync(fd) == 0 && ::fchmod(fd, 0644) == 0;
+  if (::close(fd) != 0 || !ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
     return false;
   }
-  return std::rename(tmp.c_str(), path.c_str()) == 0;
+  return true;
 }
 
 std::string directory_of(const std::string& path) {

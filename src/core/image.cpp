@@ -6,7 +6,9 @@
 #include <cstring>
 #include <limits>
 
+#include "core/error.h"
 #include "core/file_io.h"
+#include "core/image_decode.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_STATIC
@@ -68,16 +70,33 @@ bool write_hdr(const std::string& path, int w, int h, const std::vector<float>& 
 }
 
 bool read_hdr(const std::string& path, int* w, int* h, std::vector<float>* rgba) {
-  const auto bytes = read_file(path);
-  if (!bytes) return false;
-  int n = 0;
-  float* p = stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes->data()), int(bytes->size()), w, h, &n, 4);
-  if (!p) return false;
-  rgba->assign(size_t(*w) * *h * 4, 0.0f);
-  for (int y = 0; y < *h; ++y)
-    for (int i = 0; i < *w * 4; ++i) (*rgba)[size_t(*h - 1 - y) * *w * 4 + i] = p[size_t(y) * *w * 4 + i];
+  try {
+    FloatImage img = load_float_image(path);
+    *w = img.width;
+    *h = img.height;
+    *rgba = std::move(img.rgba);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+FloatImage decode_png_float(const std::string& bytes, const std::string& path) {
+  const size_t idat = check_png_structure(bytes, path);
+  if (bytes.size() > size_t(1) << 30) throw InputError(path, 0, "PNG file too large");
+  int w = 0, h = 0, n = 0;
+  float* p = stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h, &n, 4);
+  // The chunks are sound, so what stb_image refuses is the header's values or the
+  // compressed pixel data; it reports no offset, the IDAT's is the best we know.
+  if (!p) throw InputError(path, 0, "byte " + std::to_string(idat) + ": unreadable PNG pixel data: " + stbi_failure_reason());
+  FloatImage img;
+  img.width = w;
+  img.height = h;
+  img.rgba.assign(size_t(w) * size_t(h) * 4, 0.0f);
+  for (int y = 0; y < h; ++y)
+    std::memcpy(&img.rgba[size_t(h - 1 - y) * size_t(w) * 4], p + size_t(y) * size_t(w) * 4, size_t(w) * 4 * sizeof(float));
   stbi_image_free(p);
-  return true;
+  return img;
 }
 
 bool read_image(const std::string& path, LoadedImage* out, std::string* error) {
@@ -127,27 +146,24 @@ bool write_pfm(const std::string& path, int w, int h, const std::vector<float>& 
   std::string bytes = "PF\n" + std::to_string(w) + " " + std::to_string(h) + "\n-1.0\n";
   const size_t header = bytes.size();
   bytes.resize(header + size_t(w) * h * 12);
-  float* out = reinterpret_cast<float*>(&bytes[header]);
+  // The header's length is arbitrary: the floats are unaligned, so they are copied.
   for (size_t i = 0; i < size_t(w) * h; ++i)  // PFM rows run bottom to top, as GL's do
-    for (size_t c = 0; c < 3; ++c) out[i * 3 + c] = rgba[i * 4 + c];
+    for (size_t c = 0; c < 3; ++c) std::memcpy(&bytes[header + (i * 3 + c) * 4], &rgba[i * 4 + c], 4);
   return write_file_atomic(path, bytes.data(), bytes.size());
 }
 
 bool read_pfm(const std::string& path, int* w, int* h, std::vector<float>* rgba) {
-  const auto bytes = read_file(path);
-  if (!bytes || bytes->compare(0, 3, "PF\n") != 0) return false;
-  double scale = 0;
-  int consumed = 0;
-  if (std::sscanf(bytes->c_str() + 3, "%d %d %lf%n", w, h, &scale, &consumed) != 3 || *w <= 0 || *h <= 0 || scale >= 0)
-    return false;  // only little-endian (negative scale) files, as written above
-  const size_t header = 3 + size_t(consumed) + 1;
-  const size_t n = size_t(*w) * size_t(*h);
-  if (bytes->size() < header + n * 12) return false;
-  rgba->assign(n * 4, 1.0f);
-  const char* p = bytes->data() + header;
-  for (size_t i = 0; i < n; ++i)
-    for (size_t c = 0; c < 3; ++c) std::memcpy(&(*rgba)[i * 4 + c], p + (i * 3 + c) * 4, 4);
-  return true;
+  try {
+    const auto bytes = read_file(path);
+    if (!bytes) return false;
+    FloatImage img = decode_pfm(*bytes, path);
+    *w = img.width;
+    *h = img.height;
+    *rgba = std::move(img.rgba);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
 }
 
 ImageStats image_stats(const std::vector<float>& rgba) {

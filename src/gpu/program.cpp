@@ -24,6 +24,7 @@ GLuint start_shader(GLenum type, const ShaderSource& src) {
   const char* text = src.text.c_str();
   glShaderSource(s, 1, &text, nullptr);
   glCompileShader(s);
+  PT_GL_CHECK("glShaderSource/glCompileShader");
   return s;
 }
 
@@ -62,6 +63,7 @@ Program Program::start(const ShaderSource& vs, const ShaderSource& fs) {
   glAttachShader(p.id_, p.vs_);
   glAttachShader(p.id_, p.fs_);
   glLinkProgram(p.id_);
+  PT_GL_CHECK("glAttachShader/glLinkProgram");
   return p;
 }
 

@@ -9,14 +9,10 @@
 #include <glm/glm.hpp>
 
 #include "gpu/gl.h"
+#include "gpu/gl_check.h"
 #include "shadergen/shadergen.h"
 
 namespace pt {
-
-class GlError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 class Program {
  public:
@@ -37,13 +33,32 @@ class Program {
   Program& operator=(const Program&) = delete;
 
   GLuint id() const { return id_; }
-  void use() const { glUseProgram(id_); }
+  void use() const {
+    glUseProgram(id_);
+    PT_GL_CHECK("glUseProgram");
+  }
   GLint loc(const char* name);
-  void set(const char* name, int v) { glUniform1i(loc(name), v); }
-  void set(const char* name, float v) { glUniform1f(loc(name), v); }
-  void set(const char* name, glm::vec2 v) { glUniform2f(loc(name), v.x, v.y); }
-  void set(const char* name, glm::vec3 v) { glUniform3f(loc(name), v.x, v.y, v.z); }
-  void set(const char* name, glm::ivec2 v) { glUniform2i(loc(name), v.x, v.y); }
+  // A uniform set with the wrong type is GL_INVALID_OPERATION: checked with its name.
+  void set(const char* name, int v) {
+    glUniform1i(loc(name), v);
+    PT_GL_CHECK(name);
+  }
+  void set(const char* name, float v) {
+    glUniform1f(loc(name), v);
+    PT_GL_CHECK(name);
+  }
+  void set(const char* name, glm::vec2 v) {
+    glUniform2f(loc(name), v.x, v.y);
+    PT_GL_CHECK(name);
+  }
+  void set(const char* name, glm::vec3 v) {
+    glUniform3f(loc(name), v.x, v.y, v.z);
+    PT_GL_CHECK(name);
+  }
+  void set(const char* name, glm::ivec2 v) {
+    glUniform2i(loc(name), v.x, v.y);
+    PT_GL_CHECK(name);
+  }
   double compile_ms() const { return compile_ms_; }
 
  private:

@@ -1,5 +1,7 @@
 #include "gpu/texture.h"
 
+#include "gpu/gl_check.h"
+
 namespace pt {
 
 Texture::Texture(int w, int h, GLenum internal_format, const float* data) : w_(w), h_(h) {
@@ -14,11 +16,13 @@ Texture::Texture(int w, int h, GLenum internal_format, const float* data) : w_(w
                                                        : GL_FLOAT;
   glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal_format), w, h, 0, GL_RGBA, type,
                type == GL_FLOAT ? data : nullptr);
+  PT_GL_CHECK("glTexImage2D");  // GL_OUT_OF_MEMORY, or a size over the limit
 }
 
 void Texture::bind(int unit) const {
   glActiveTexture(GLenum(GL_TEXTURE0 + unit));
   glBindTexture(GL_TEXTURE_2D, id_);
+  PT_GL_CHECK("glActiveTexture/glBindTexture");
 }
 
 void Texture::reset() {
@@ -30,12 +34,14 @@ Framebuffer::Framebuffer(const Texture& color) {
   glGenFramebuffers(1, &id_);
   glBindFramebuffer(GL_FRAMEBUFFER, id_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+  PT_GL_CHECK("glFramebufferTexture2D");
 }
 
 Framebuffer::Framebuffer(const Texture& color0, const Texture& color1) : Framebuffer(color0) {
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, color1.id(), 0);
   const GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, bufs);
+  PT_GL_CHECK("glFramebufferTexture2D/glDrawBuffers");
 }
 
 bool Framebuffer::complete() const {

@@ -27,7 +27,9 @@ Texture upload(const RecordBuffer& b, const char* what) {
 
 }  // namespace
 
-Renderer::Renderer() {
+Renderer::Renderer() : limits_(GlLimits::query()) {
+  limits_.require_units(int(kUvUnit) + 1, "the integrator");
+  limits_.require_draw_buffers(2, "the accumulator (radiance and statistics targets)");
   glGenVertexArrays(1, &vao_);
   display_ = Program(fullscreen_vertex(), generate_display());
   // Float render targets need EXT_color_buffer_float on WebGL 2 / GLES 3.0. Without it we
@@ -92,6 +94,17 @@ void Renderer::update_sh() {
 }
 
 void Renderer::set_scene(const Scene& scene) {
+  // Everything that can fail (packing, limits, image maps, compiling) happens before any
+  // state changes: a scene that cannot be rendered leaves the previous one and its samples.
+  const PackedScene p = pack_scene(scene);
+  limits_.require_texture(kDataWidth, p.shapes.rows(), "the scene's objects (" + std::to_string(p.shapes.count()) + ")");
+  limits_.require_texture(kDataWidth, p.materials.rows(), "the scene's materials");
+  limits_.require_texture(kDataWidth, p.lights.rows(), "the scene's lights");
+  limits_.require_texture(kDataWidth, p.nodes.rows(), "the scene's BVH (" + std::to_string(p.nodes.count()) + " nodes)");
+  limits_.require_texture(kDataWidth, p.prims.rows(), "the scene's primitives (" + std::to_string(p.prims.count()) + ")");
+  limits_.require_texture(kDataWidth, p.vertices.rows(), "the scene's mesh vertices");
+  if (scene.environment.map)
+    limits_.require_texture(scene.environment.map->width + 1, scene.environment.map->height + 1, "the environment map");
   const Features old = features_;
   features_ = Features::of(scene);
   // Image maps first: a scene beyond this GPU's texture limits throws before anything changes.
@@ -110,7 +123,6 @@ void Renderer::set_scene(const Scene& scene) {
     sh_valid_ = false;
   env_ = e;
   update_sh();
-  const PackedScene p = pack_scene(scene);
   shape_tex_ = upload(p.shapes, "shapes");
   material_tex_ = upload(p.materials, "materials");
   light_tex_ = upload(p.lights, "lights");
@@ -173,6 +185,10 @@ void Renderer::set_settings(const RenderSettings& s) {
 
 void Renderer::resize(int width, int height) {
   if (width == width_ && height == height_) return;
+  limits_.require_texture(width, height, "a " + std::to_string(width) + "x" + std::to_string(height) + " render");
+  if (width > limits_.max_viewport[0] || height > limits_.max_viewport[1])
+    throw GlError("a " + std::to_string(width) + "x" + std::to_string(height) + " render exceeds GL_MAX_VIEWPORT_DIMS " +
+                  std::to_string(limits_.max_viewport[0]) + "x" + std::to_string(limits_.max_viewport[1]));
   width_ = width;
   height_ = height;
   for (int i = 0; i < 2; ++i) {
@@ -201,6 +217,7 @@ int Renderer::step() {
       glBindFramebuffer(GL_FRAMEBUFFER, f.id());
       glClearBufferfv(GL_COLOR, 0, zero);
       glClearBufferfv(GL_COLOR, 1, zero);
+      PT_GL_CHECK("glClearBufferfv");
     }
     needs_clear_ = false;
   }
@@ -271,6 +288,7 @@ int Renderer::step() {
   }
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  PT_GL_CHECK("glDrawArrays (integrator)");
   if (whole) {
     cur_ = 1 - cur_;
   } else {
@@ -285,6 +303,7 @@ int Renderer::step() {
       glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + a));
       glDrawBuffers(2, bufs);
       glBlitFramebuffer(0, y0, width_, y1, 0, y0, width_, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      PT_GL_CHECK("glBlitFramebuffer (band copy-back)");
     }
     const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(2, both);
@@ -311,12 +330,14 @@ void Renderer::display(int x, int y) const {
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  PT_GL_CHECK("glDrawArrays (display)");
 }
 
 std::vector<float> Renderer::read_radiance() const {
   std::vector<float> out(size_t(width_) * height_ * 4);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur_].id());
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
+  PT_GL_CHECK("glReadPixels (radiance)");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return out;
 }
@@ -326,6 +347,7 @@ Renderer::Counters Renderer::counters() const {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur_].id());
   glReadBuffer(GL_COLOR_ATTACHMENT1);
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, px.data());
+  PT_GL_CHECK("glReadPixels (counters)");
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   Counters c;
@@ -344,6 +366,7 @@ std::vector<uint8_t> Renderer::read_display() const {
   display(0, 0);
   std::vector<uint8_t> out(size_t(width_) * height_ * 4);
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  PT_GL_CHECK("glReadPixels (display)");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return out;
 }

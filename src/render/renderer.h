@@ -79,6 +79,10 @@ class Renderer {
     double build_ms = 0.0;
   };
   const BvhStats& bvh_stats() const { return bvh_stats_; }
+  // What this context allows (queried in the constructor). Lowering them makes the
+  // renderer refuse what a smaller GPU would (tests; nothing else should call it).
+  const GlLimits& limits() const { return limits_; }
+  void override_limits(const GlLimits& l) { limits_ = l; }
 
   // Linear radiance (RGB) and mean squared luminance (A), rows bottom to top.
   std::vector<float> read_radiance() const;
@@ -134,6 +138,7 @@ class Renderer {
   glm::vec3 env_color_{0.5f};
   Camera camera_;
   RenderSettings settings_;
+  GlLimits limits_;
 };
 
 }  // namespace pt

@@ -1,6 +1,9 @@
 #include "scene/mesh_obj.h"
 
 #include <cmath>
+#include <algorithm>
+#include <cstdlib>
+#include <vector>
 
 #define TINYOBJLOADER_IMPLEMENTATION
 #if defined(__GNUC__)
@@ -15,15 +18,132 @@
 #endif
 
 #include "core/error.h"
+#include "core/file_io.h"
 
 namespace pt {
+namespace {
 
-MeshData load_mesh_obj(const std::string& path) {
+// tinyobjloader accepts almost anything (unknown statements, "nan", indices past the
+// end, all skipped or clamped silently). This pass reads the text first, strictly, so
+// that an error names its line: known statements only, finite numbers of sane size, and
+// face indices that refer to an element defined before them (OBJ's rule).
+class ObjChecker {
+ public:
+  ObjChecker(const std::string& path) : path_(path) {}
+
+  void check(const std::string& text) {
+    size_t i = 0;
+    while (i < text.size()) {
+      ++line_;
+      size_t e = text.find('\n', i);
+      if (e == std::string::npos) e = text.size();
+      std::string l = text.substr(i, e - i);
+      i = e + 1;
+      if (l.find('\0') != std::string::npos) fail("NUL byte in the text");
+      const size_t hash = l.find('#');
+      if (hash != std::string::npos) l.resize(hash);
+      statement(split(l));
+    }
+    if (faces_ == 0) {
+      line_ = std::max(line_, 1);
+      fail("no faces (the file ends here)");
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(path_, line_, what); }
+
+  static std::vector<std::string> split(const std::string& l) {
+    std::vector<std::string> out;
+    size_t i = 0;
+    for (;;) {
+      i = l.find_first_not_of(" \t\r\\", i);
+      if (i == std::string::npos) return out;
+      const size_t e = l.find_first_of(" \t\r\\", i);
+      out.push_back(l.substr(i, e == std::string::npos ? std::string::npos : e - i));
+      if (e == std::string::npos) return out;
+      i = e;
+    }
+  }
+
+  void numbers(const std::vector<std::string>& t, size_t lo, size_t hi) {
+    if (t.size() - 1 < lo || t.size() - 1 > hi)
+      fail("'" + t[0] + "' takes " + std::to_string(lo) + (lo == hi ? "" : " to " + std::to_string(hi)) + " numbers, not " +
+           std::to_string(t.size() - 1));
+    for (size_t k = 1; k < t.size(); ++k) {
+      const char* b = t[k].c_str();
+      char* end = nullptr;
+      const double x = std::strtod(b, &end);
+      const bool plain = t[k].find_first_not_of("0123456789+-.eE") == std::string::npos;
+      if (!plain || end != b + t[k].size() || t[k].empty()) fail("'" + t[k] + "' is not a number");
+      if (!std::isfinite(x) || std::abs(x) > 1e9) fail("'" + t[k] + "' is not finite or is absurdly large (|x| > 1e9)");
+    }
+  }
+
+  // One "v", "v/t", "v//n" or "v/t/n" corner of a face.
+  void corner(const std::string& c) {
+    long counts[3] = {v_, vt_, vn_};
+    const char* names[3] = {"vertex", "texture coordinate", "normal"};
+    size_t start = 0;
+    for (int k = 0; k < 3; ++k) {
+      const size_t slash = c.find('/', start);
+      const std::string part = c.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+      if (part.empty()) {
+        if (k == 0) fail("face corner '" + c + "' has no vertex index");
+      } else {
+        char* end = nullptr;
+        const long x = std::strtol(part.c_str(), &end, 10);
+        if (end != part.c_str() + part.size() || part.size() > 10) fail("face corner '" + c + "' is not an index");
+        if (x == 0 || x > counts[k] || x < -counts[k])
+          fail("face corner '" + c + "' refers to " + names[k] + " " + std::to_string(x) + ", but " + std::to_string(counts[k]) +
+               " are defined before it");
+      }
+      if (slash == std::string::npos) {
+        return;
+      }
+      if (k == 2) fail("face corner '" + c + "' has more than three indices");
+      start = slash + 1;
+    }
+  }
+
+  void statement(const std::vector<std::string>& t) {
+    if (t.empty()) return;
+    const std::string& k = t[0];
+    if (k == "v") {
+      numbers(t, 3, 7);  // x y z, optionally w or an r g b colour
+      ++v_;
+    } else if (k == "vt") {
+      numbers(t, 1, 3);
+      ++vt_;
+    } else if (k == "vn") {
+      numbers(t, 3, 3);
+      ++vn_;
+    } else if (k == "f") {
+      if (t.size() < 4) fail("a face needs at least 3 corners");
+      for (size_t c = 1; c < t.size(); ++c) corner(t[c]);
+      ++faces_;
+    } else if (k == "o" || k == "g" || k == "s" || k == "usemtl" || k == "mtllib") {
+      // names, smoothing groups and materials do not change the geometry we use
+    } else {
+      fail("unknown or unsupported statement '" + k.substr(0, 20) + "'");
+    }
+  }
+
+  const std::string& path_;
+  int line_ = 0;
+  long v_ = 0, vt_ = 0, vn_ = 0, faces_ = 0;
+};
+
+}  // namespace
+
+MeshData parse_mesh_obj(const std::string& text, const std::string& path) {
+  ObjChecker(path).check(text);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
+  // From a string, "mtllib" reads nothing from disk: materials are the scene's.
+  if (!reader.ParseFromString(text, "", config)) {
     std::string why = reader.Error();
     while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
     throw InputError(path, 0, why.empty() ? "cannot read the OBJ file" : why);
@@ -51,6 +171,12 @@ MeshData load_mesh_obj(const std::string& path) {
   }
   if (m.triangles.empty()) throw InputError(path, 0, "no faces");
   return m;
+}
+
+MeshData load_mesh_obj(const std::string& path) {
+  const auto text = read_file(path);
+  if (!text) throw InputError(path, 0, "cannot open the mesh file");
+  return parse_mesh_obj(*text, path);
 }
 
 }  // namespace pt

@@ -46,11 +46,20 @@ const char* XmlAttrs::raw(const char* name) {
   return e_->Attribute(name);
 }
 
+// Finite but absurd magnitudes overflow float arithmetic in the shader (a squared
+// distance of 1e20 is inf): every number in a scene stays within +-kMaxMagnitude.
+void XmlAttrs::check_range(const char* name, const char* text, const float* v, int n) const {
+  for (int i = 0; i < n; ++i)
+    if (std::abs(v[i]) > kMaxMagnitude)
+      fail(std::string("attribute '") + name + "' is absurdly large (|x| > 1e9): \"" + text + "\"");
+}
+
 float XmlAttrs::number(const char* name) {
   const char* t = raw(name);
   if (!t) fail(std::string("missing attribute '") + name + "'");
   float v;
   if (!parse_floats(t, &v, 1)) fail(std::string("attribute '") + name + "' is not a finite number: \"" + t + "\"");
+  check_range(name, t, &v, 1);
   return v;
 }
 
@@ -61,6 +70,7 @@ glm::vec3 XmlAttrs::vec3(const char* name) {
   if (!t) fail(std::string("missing attribute '") + name + "'");
   glm::vec3 v;
   if (!parse_floats(t, &v.x, 3)) fail(std::string("attribute '") + name + "' needs 3 finite numbers: \"" + t + "\"");
+  check_range(name, t, &v.x, 3);
   return v;
 }
 
@@ -71,6 +81,7 @@ glm::vec2 XmlAttrs::vec2(const char* name) {
   if (!t) fail(std::string("missing attribute '") + name + "'");
   glm::vec2 v;
   if (!parse_floats(t, &v.x, 2)) fail(std::string("attribute '") + name + "' needs 2 finite numbers: \"" + t + "\"");
+  check_range(name, t, &v.x, 2);
   return v;
 }
 

@@ -13,6 +13,9 @@ class XMLElement;
 
 namespace pt {
 
+// The largest magnitude any number in a scene may have (see check_range).
+constexpr float kMaxMagnitude = 1e9f;
+
 class XmlAttrs {
  public:
   XmlAttrs(const tinyxml2::XMLElement* e, const std::string& file);
@@ -32,6 +35,7 @@ class XmlAttrs {
 
  private:
   const char* raw(const char* name);
+  void check_range(const char* name, const char* text, const float* v, int n) const;
   const tinyxml2::XMLElement* e_;
   const std::string& file_;
   std::set<std::string> used_;

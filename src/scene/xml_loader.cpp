@@ -19,6 +19,7 @@
 #include "scene/env_map.h"
 #include "scene/mesh_generate.h"
 #include "scene/mesh_gltf.h"
+#include "core/image_decode.h"
 #include "scene/mesh_json.h"
 #include "scene/mesh_obj.h"
 #include "scene/textured_loader.h"
@@ -185,21 +186,45 @@ struct Loader {
   Scene scene;
   std::map<std::string, std::vector<GltfPart>> mesh_files;  // loaded once per path
 
+  bool allow_files = true;  // false: any file reference is an error (fuzzing, untrusted text)
+  int composite_depth = 0;  // FresnelComposites being parsed around the current element
+
   // A path in a scene file is relative to the scene file's folder. Every referenced file
   // passes through here, so it is also where the dependency list is collected.
-  std::string resolve_path(const std::string& p) {
+  std::string resolve_path(XmlAttrs& a, const std::string& p) {
+    if (!allow_files) a.fail("file references are disabled for this scene text");
     std::string r = !p.empty() && p[0] == '/' ? p : directory_of(file) + "/" + p;
     scene.files.push_back(r);
     return r;
   }
 
   std::shared_ptr<const EnvImage> load_env_image(XmlAttrs& a, const std::string& path) {
+    auto img = std::make_shared<EnvImage>();
+    std::vector<float> rgba;
     try {
-      return load_env_map(path);
-    } catch (const std::runtime_error& e) {
-      a.fail(e.what());
+      FloatImage f = load_float_image(path);
+      img->width = f.width;
+      img->height = f.height;
+      rgba = std::move(f.rgba);
+    } catch (const InputError& err) {
+      a.fail(std::string("cannot load the environment map: ") + err.what());
     }
+    if (img->width < 2 || img->height < 1 || img->width > 16384 || img->height > 8192)
+      a.fail("environment map '" + path + "' has an unusable size " + std::to_string(img->width) + "x" + std::to_string(img->height));
+    // read_hdr gives rows bottom to top; the map is kept top (theta = 0) to bottom.
+    const size_t row = size_t(img->width) * 4;
+    img->rgba.resize(rgba.size());
+    for (int y = 0; y < img->height; ++y)
+      std::copy_n(&rgba[size_t(img->height - 1 - y) * row], row, &img->rgba[size_t(y) * row]);
+    for (size_t i = 0; i < img->rgba.size(); ++i) {
+      const float v = img->rgba[i];
+      if (!std::isfinite(v) || v < 0.0f || v > kMaxMagnitude)
+        a.fail("environment map '" + path + "' pixel (" + std::to_string(i / 4 % size_t(img->width)) + ", " +
+               std::to_string(i / 4 / size_t(img->width)) + ") from the top is negative, non-finite or absurd (> 1e9)");
+    }
+    return img;
   }
+
 
   [[noreturn]] void fail(const XMLElement* e, const std::string& what) {
     throw InputError(file, e ? e->GetLineNum() : 0, what);
@@ -284,7 +309,7 @@ struct Loader {
   void mesh(const XMLElement* e) {
     XmlAttrs a(e, file);
     const bool generated = e->Attribute("generate") != nullptr;
-    const std::string src = generated ? std::string() : resolve_path(a.text("src"));
+    const std::string src = generated ? std::string() : resolve_path(a, a.text("src"));
     const glm::vec3 position = a.vec3("position", glm::vec3(0.0f));
     const glm::vec3 rotation = a.vec3("rotation", glm::vec3(0.0f));
     const float scale = a.number("scale", 1.0f);
@@ -335,6 +360,10 @@ struct Loader {
     place = glm::scale(place, glm::vec3(scale));
     const int shared_material = m ? material(m, glm::vec3(1.0f)) : -1;
     for (const GltfPart& part : parts) {
+      const glm::mat4 world = place * part.transform;
+      for (const glm::vec3& v : part.mesh->positions)
+        if (glm::any(glm::greaterThan(glm::abs(glm::vec3(world * glm::vec4(v, 1.0f))), glm::vec3(kMaxMagnitude))))
+          a.fail("scaled and moved, the mesh has a vertex beyond 1e9");
       Shape s;
       s.kind = ShapeKind::Mesh;
       s.mesh = mesh_index(part.mesh);
@@ -443,7 +472,7 @@ struct Loader {
           en.color = env.vec3("color");
           if (glm::any(glm::lessThan(en.color, glm::vec3(0.0f)))) env.fail("'color' must be >= 0");
         } else {
-          en.map_path = resolve_path(env.text("map"));
+          en.map_path = resolve_path(env, env.text("map"));
           en.map = load_env_image(env, en.map_path);
           en.rotation = env.number("rotation", 0.0f);
           en.intensity = env.number("intensity", 1.0f);
@@ -469,6 +498,15 @@ struct Loader {
 // </FresnelComposite>: the first child is taken with the dielectric Fresnel reflectance
 // of the na|nb interface, the second otherwise.
 void parse_fresnel_composite(Loader& l, XmlAttrs& a, const XMLElement* e, Material& m) {
+  // The shader resolves nested composites in a loop of kMaxCompositeDepth levels (GLSL has
+  // no recursion); a deeper one would never scatter and silently lose energy.
+  constexpr int kMaxCompositeDepth = 4;
+  if (l.composite_depth >= kMaxCompositeDepth) a.fail("nested more than 4 deep (the shader resolves 4 levels)");
+  struct Depth {
+    int& d;
+    explicit Depth(int& x) : d(++x) {}
+    ~Depth() { --d; }
+  } depth(l.composite_depth);
   m.outer_ior = positive_ior(a, "na", 1.0f);
   m.inner_ior = positive_ior(a, "nb", 1.5f);
   const XMLElement* first = e->FirstChildElement();
@@ -485,13 +523,38 @@ void parse_textured(Loader& l, XmlAttrs& a, const XMLElement*, Material& m) { pa
 
 }  // namespace
 
-Scene load_scene_text(const std::string& text, const std::string& path) {
+// Text between elements is never meaningful in the format: it is an error, not ignored.
+static void reject_text(const tinyxml2::XMLNode* n, const std::string& path) {
+  for (const tinyxml2::XMLNode* c = n->FirstChild(); c; c = c->NextSibling()) {
+    if (const tinyxml2::XMLText* t = c->ToText()) {
+      const char* v = t->Value();
+      if (v && v[std::strspn(v, " \t\r\n")] != '\0')
+        throw InputError(path, c->GetLineNum(), "unexpected text \"" + std::string(v).substr(0, 40) + "\"" +
+                                                    (n->ToElement() ? " in <" + std::string(n->Value()) + ">" : ""));
+    } else if (c->ToUnknown()) {
+      throw InputError(path, c->GetLineNum(), "unexpected markup <" + std::string(c->Value()).substr(0, 40) + ">");
+    }
+    reject_text(c, path);  // depth is bounded by tinyxml2 (TINYXML2_MAX_ELEMENT_DEPTH)
+  }
+}
+
+Scene load_scene_text(const std::string& text, const std::string& path, bool allow_files) {
+  // tinyxml2 stops at a NUL byte and accepts what came before: a NUL is an error here.
+  const size_t nul = text.find('\0');
+  if (nul != std::string::npos)
+    throw InputError(path, 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(nul), '\n')),
+                     "NUL byte at byte " + std::to_string(nul) + " (not a text file?)");
   tinyxml2::XMLDocument doc;
   if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
-    const char* msg = doc.ErrorStr();
-    throw InputError(path, doc.ErrorLineNum(), std::string("malformed XML: ") + (msg ? msg : "parse error"));
+    // ErrorStr() is "Error=NAME ErrorID=.. Line number=N[: detail]": keep NAME and detail.
+    const std::string full = doc.ErrorStr() ? doc.ErrorStr() : "";
+    const size_t detail = full.find(": ", full.find("Line number="));
+    const std::string why = std::string(doc.ErrorName()) + (detail == std::string::npos ? "" : full.substr(detail));
+    throw InputError(path, std::max(1, doc.ErrorLineNum()), "malformed XML: " + why);
   }
+  reject_text(&doc, path);
   Loader l;
+  l.allow_files = allow_files;
   l.file = path;
   l.scene.path = path;
   l.scene.files = {path};
@@ -502,6 +565,10 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
 Scene load_scene_file(const std::string& path) {
   const auto text = read_file(path);
   if (!text) throw InputError(path, 0, "cannot open the scene file");
+  // Meshes and images are separate files: a scene this large is not a scene.
+  if (text->size() > kMaxSceneBytes)
+    throw InputError(path, 0, "the scene file has " + std::to_string(text->size()) + " bytes (at most " +
+                                  std::to_string(kMaxSceneBytes) + ")");
   return load_scene_text(*text, path);
 }
 

@@ -135,7 +135,7 @@ TEST_CASE("Environment sets the constant background radiance, strictly", "[loade
   CHECK(error_of(h + "<Environment color=\"1 1 1\" map=\"a.hdr\"/>" + obj + "</SceneLevel>") ==
         "bad.xml:4: <Environment>: give either 'color' or 'map'");
   CHECK(error_of(h + "<Environment map=\"no-such.hdr\"/>" + obj + "</SceneLevel>") ==
-        "bad.xml:4: <Environment>: cannot read the environment map './no-such.hdr'");
+        "bad.xml:4: <Environment>: cannot load the environment map: ./no-such.hdr: cannot open the image file");
 }
 
 TEST_CASE("a missing scene file is an error naming the file", "[loader]") {

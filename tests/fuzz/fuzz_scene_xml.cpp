@@ -1,0 +1,16 @@
+// libFuzzer target: the XML scene loader on arbitrary text. File references are refused
+// (allow_files = false), so the fuzzer never reads the disk; meshes and images have
+// their own targets. Only InputError may come out: anything else is a finding.
+#include <cstdint>
+#include <string>
+
+#include "core/error.h"
+#include "scene/xml_loader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  try {
+    pt::load_scene_text(std::string(reinterpret_cast<const char*>(data), size), "fuzz.xml", false);
+  } catch (const pt::InputError&) {
+  }
+  return 0;
+}

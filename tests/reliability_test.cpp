@@ -1,0 +1,228 @@
+// Nothing is lost, the GPU is checked: atomic saves, exact restarts, a failed scene change
+// that keeps the previous accumulation, GL error checks and queried resource limits, and
+// a draw pacer that sizes bands from measured time.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <filesystem>
+#include <thread>
+
+#include "core/file_io.h"
+#include "gl_context.h"
+#include "gpu/gl_check.h"
+#include "gpu/texture.h"
+#include "render/pacing.h"
+#include "render/renderer.h"
+#include "scene/xml_loader.h"
+#include "test_paths.h"
+
+using namespace pt;
+
+namespace {
+
+std::string scratch(const std::string& name) {
+  const std::string d = std::string(PT_BINARY_DIR) + "/reliability/" + name;
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+std::vector<float> render_to_end(Renderer& r) {
+  while (!r.converged()) r.step();
+  return r.read_radiance();
+}
+
+}  // namespace
+
+TEST_CASE("saving is atomic: a reader sees the old file or the new one, never a part", "[reliability][save]") {
+  const std::string dir = scratch("atomic");
+  const std::string path = dir + "/image.hdr";
+  // Two contents of 4 MiB that differ in every byte: any mix or truncation is detectable.
+  const std::string a(size_t(4) << 20, 'a'), b(size_t(4) << 20, 'b');
+  REQUIRE(write_file_atomic(path, a.data(), a.size()));
+  std::atomic<bool> done{false};
+  std::atomic<int> reads{0}, torn{0};
+  std::thread reader([&] {
+    while (!done) {
+      const auto got = read_file(path);
+      if (!got || !(*got == a || *got == b)) ++torn;
+      ++reads;
+    }
+  });
+  for (int i = 0; i < 40; ++i) {
+    const std::string& next = i % 2 ? a : b;
+    CHECK(write_file_atomic(path, next.data(), next.size()));
+  }
+  done = true;
+  reader.join();
+  INFO(reads << " reads while writing");
+  CHECK(reads > 10);
+  CHECK(torn == 0);
+  // No temporary file is left behind, and the file is readable by others (not mkstemp's 0600).
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();
+  CHECK(files == 1);
+  CHECK((std::filesystem::status(path).permissions() & std::filesystem::perms::others_read) != std::filesystem::perms::none);
+  // A failed save (the target is a folder) leaves the target and the folder as they were.
+  std::filesystem::create_directories(dir + "/taken/x");
+  CHECK_FALSE(write_file_atomic(dir + "/taken", a.data(), 16));
+  CHECK(std::filesystem::is_directory(dir + "/taken/x"));
+  files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();
+  CHECK(files == 1);
+}
+
+TEST_CASE("a restart is exact: changing the scene mid-sweep equals a fresh render of the new state", "[gpu][reliability]") {
+  test_gl();
+  const Scene before = load_scene_file(repo_path("scenes/reference/scene2.xml"));
+  Scene after = before;
+  after.lights[0].intensity *= 3.0f;  // a different scene state, the same program
+  after.materials[size_t(after.shapes[size_t(after.lights[0].shape)].material)].emission *= 3.0f;
+  RenderSettings s;
+  s.band_rows = 5;  // does not divide 32: bands end mid-image
+  s.sample_limit = 6;
+  s.spp_per_pass = 2;
+  Renderer changed;
+  changed.resize(32, 32);
+  changed.set_settings(s);
+  changed.set_scene(before);
+  for (int i = 0; i < 10; ++i) changed.step();  // one whole sweep and 3 of 7 bands of the next
+  REQUIRE(changed.samples() == 2);
+  REQUIRE(changed.mid_sweep());
+  changed.set_scene(after);
+  CHECK(changed.samples() == 0);
+  CHECK_FALSE(changed.mid_sweep());
+  const std::vector<float> got = render_to_end(changed);
+  Renderer fresh;
+  fresh.resize(32, 32);
+  fresh.set_settings(s);
+  fresh.set_scene(after);
+  const std::vector<float> want = render_to_end(fresh);
+  REQUIRE(got.size() == want.size());
+  double worst = 0;
+  for (size_t i = 0; i < got.size(); ++i) worst = std::max(worst, double(std::abs(got[i] - want[i])));
+  CHECK(worst == 0.0);  // the same sample indices, none of the old state
+  // The same through a camera move mid-sweep.
+  changed.set_scene(before);
+  for (int i = 0; i < 3; ++i) changed.step();
+  Camera cam = before.camera;
+  cam.yaw += 5.0f;
+  changed.set_camera(cam);
+  Scene moved = before;
+  moved.camera = cam;
+  fresh.set_scene(moved);
+  const std::vector<float> got2 = render_to_end(changed), want2 = render_to_end(fresh);
+  worst = 0;
+  for (size_t i = 0; i < got2.size(); ++i) worst = std::max(worst, double(std::abs(got2[i] - want2[i])));
+  CHECK(worst == 0.0);
+}
+
+TEST_CASE("a scene that cannot be rendered keeps the previous scene and its samples", "[gpu][reliability]") {
+  test_gl();
+  const Scene good = load_scene_file(repo_path("scenes/reference/scene0.xml"));
+  Renderer r;
+  r.resize(24, 24);
+  RenderSettings s;
+  s.sample_limit = 8;
+  r.set_settings(s);
+  r.set_scene(good);
+  for (int i = 0; i < 4; ++i) r.step();
+  const std::vector<float> before = r.read_radiance();
+  // A GPU whose textures cannot hold the scene's data rows (1024 texels wide).
+  const GlLimits real = r.limits();
+  GlLimits small = real;
+  small.max_texture_size = 1000;
+  r.override_limits(small);
+  try {
+    r.set_scene(load_scene_file(repo_path("scenes/reference/scene2.xml")));
+    FAIL("a scene over the limits was accepted");
+  } catch (const GlError& e) {
+    CHECK(std::string(e.what()).find("the scene's objects") != std::string::npos);
+    CHECK(std::string(e.what()).find("GL_MAX_TEXTURE_SIZE") != std::string::npos);
+  }
+  r.override_limits(real);
+  CHECK(r.samples() == 4);
+  CHECK(r.read_radiance() == before);
+  // And it goes on accumulating the same estimate as a renderer never disturbed.
+  const std::vector<float> resumed = render_to_end(r);
+  Renderer calm;
+  calm.resize(24, 24);
+  calm.set_settings(s);
+  calm.set_scene(good);
+  CHECK(render_to_end(calm) == resumed);
+}
+
+TEST_CASE("resource limits are queried, and a render over them is a clear error", "[gpu][reliability]") {
+  test_gl();
+  Renderer r;
+  const GlLimits& l = r.limits();
+  std::printf("GL limits: MAX_TEXTURE_SIZE %d, fragment texture units %d, draw buffers %d, viewport %dx%d\n",
+              l.max_texture_size, l.max_texture_units, l.max_draw_buffers, l.max_viewport[0], l.max_viewport[1]);
+  CHECK(l.max_texture_size >= 2048);  // GLES 3.0 minimum
+  CHECK(l.max_texture_units >= 16);
+  CHECK(l.max_draw_buffers >= 4);
+  GlLimits small = l;
+  small.max_texture_size = 64;
+  r.override_limits(small);
+  try {
+    r.resize(65, 10);
+    FAIL("accepted");
+  } catch (const GlError& e) {
+    CHECK(std::string(e.what()) == "a 65x10 render needs a 65x10 texture; this GPU allows at most 64 (GL_MAX_TEXTURE_SIZE)");
+  }
+  small.max_texture_units = 4;
+  CHECK_THROWS_WITH(small.require_units(7, "the integrator"),
+                    "the integrator needs 7 texture units; this GPU has 4 (GL_MAX_TEXTURE_IMAGE_UNITS)");
+}
+
+TEST_CASE("GL errors are reported with the call, file and line (checked builds)", "[gpu][reliability]") {
+  test_gl();
+  if (!kGlChecks) {
+    WARN("GL checks are compiled out in this build (release without PT_GL_CHECKS): the native-asan preset runs this");
+    return;
+  }
+  // A negative width is GL_INVALID_VALUE for glTexImage2D.
+  try {
+    Texture t(-1, 4, GL_RGBA32F, nullptr);
+    FAIL("no GL error reported");
+  } catch (const GlError& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("texture.cpp:") != std::string::npos);
+    CHECK(std::string(e.what()).find("glTexImage2D") != std::string::npos);
+    CHECK(std::string(e.what()).find("GL_INVALID_VALUE") != std::string::npos);
+  }
+  CHECK(glGetError() == GL_NO_ERROR);  // the check drained it
+}
+
+TEST_CASE("the draw pacer sizes bands from measured time", "[reliability][tiles]") {
+  const int H = 512;
+  RenderSettings s;
+  DrawPacer p(25.0);
+  p.apply(H, s);  // nothing measured: the caller's choice stands
+  CHECK(s.band_rows == 0);
+  CHECK(s.spp_per_pass == 1);
+  // 4 rows took 1 ms: 0.25 ms per row-sample, 100 rows fit in 25 ms.
+  p.record(1.0, 4, 1);
+  p.apply(H, s);
+  CHECK(s.band_rows == 100);
+  CHECK(s.spp_per_pass == 1);
+  // A slow band (rows of glass): the worst recent cost wins at once.
+  p.record(50.0, 100, 1);  // 0.5 ms per row-sample
+  p.apply(H, s);
+  CHECK(s.band_rows == 50);
+  // Cheap draws afterwards: the band grows back only as the worst cost is forgotten.
+  for (int i = 0; i < 5; ++i) p.record(0.5, 50, 1);
+  p.apply(H, s);
+  CHECK(s.band_rows == 84);  // 25 ms / (0.5 * 0.9^5 ms)
+  // A fast GPU: whole sweeps of several samples.
+  DrawPacer fast(25.0);
+  fast.record(1.0, H, 1);
+  fast.apply(H, s);
+  CHECK(s.band_rows == 0);
+  CHECK(s.spp_per_pass == 25);
+  // Even an absurdly slow draw keeps at least 4 rows (progress is made).
+  DrawPacer slow(25.0);
+  slow.record(1e6, 4, 1);
+  slow.apply(H, s);
+  CHECK(s.band_rows == 4);
+}

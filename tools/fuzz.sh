@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (preset fuzz: clang, ASan + UBSan) and runs each for a
+# bounded time from its seed corpus (tests/fuzz/corpus/<name>/ plus the malformed files
+# of its format). New inputs go to a scratch folder, so the repository is not changed.
+#   bash tools/fuzz.sh                 every target, PT_FUZZ_SECONDS (default 30) each
+#   PT_FUZZ_SECONDS=600 bash tools/fuzz.sh image     one target, longer
+# A crash stops the script (exit 1) and leaves the input in build/fuzz/artifacts/.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+seconds="${PT_FUZZ_SECONDS:-30}"
+cmake --preset fuzz >/dev/null
+cmake --build --preset fuzz
+targets=("$@")
+[[ ${#targets[@]} -gt 0 ]] || targets=(scene_xml mesh_json mesh_obj image)
+seeds_for() {  # extra seed folders: the malformed files of the target's formats
+  case "$1" in
+    scene_xml) echo tests/malformed/xml ;;
+    mesh_json) echo tests/malformed/json ;;
+    mesh_obj) echo tests/malformed/obj ;;
+    image) echo tests/malformed/hdr tests/malformed/png tests/malformed/pfm ;;
+  esac
+}
+mkdir -p build/fuzz/artifacts
+for t in "${targets[@]}"; do
+  work="build/fuzz/corpus-$t"
+  mkdir -p "$work"
+  dict=()
+  [[ -f "tests/fuzz/$t.dict" ]] && dict=(-dict="tests/fuzz/$t.dict")
+  echo "== fuzz $t for ${seconds} s"
+  # -timeout: one input taking over 10 s is a finding (a hang); -rss_limit_mb: so is 2 GB.
+  # Crashes, leaks, UBSan reports and uncaught exceptions all end the run non-zero.
+  log="build/fuzz/$t.log"
+  status=0
+  # shellcheck disable=SC2046
+  build/fuzz/fuzz_"$t" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    -max_len=65536 -print_final_stats=1 -artifact_prefix="build/fuzz/artifacts/$t-" \
+    "$work" "tests/fuzz/corpus/$t" $(seeds_for "$t") >"$log" 2>&1 || status=$?
+  grep -E "^(stat::number_of_executed_units|stat::average_exec_per_sec|stat::new_units_added|stat::peak_rss_mb|SUMMARY)" "$log" || true
+  if [[ $status -ne 0 ]]; then
+    grep -E -A30 "==[0-9]+==ERROR|runtime error|uncaught|deadly signal|Timeout" "$log" | head -60 || tail -40 "$log"
+    echo "fuzz $t: FINDING (exit $status; input in build/fuzz/artifacts/, log $log)"
+    exit 1
+  fi
+done
+echo "== fuzz: no findings"
