@@ -6,41 +6,14 @@
 namespace pt {
 
 #define PT_FIELD_LIST(t, n, tex, comp) n,
-const RecordLayout& shape_layout() {
-  using namespace shape_rec;
-  static const RecordLayout l{"shape", kTexels, {PT_SHAPE_RECORD(PT_FIELD_LIST)}};
-  return l;
-}
-const RecordLayout& material_layout() {
-  using namespace material_rec;
-  static const RecordLayout l{"material", kTexels, {PT_MATERIAL_RECORD(PT_FIELD_LIST)}};
-  return l;
-}
-const RecordLayout& light_layout() {
-  using namespace light_rec;
-  static const RecordLayout l{"light", kTexels, {PT_LIGHT_RECORD(PT_FIELD_LIST)}};
-  return l;
-}
-const RecordLayout& node_layout() {
-  using namespace node_rec;
-  static const RecordLayout l{"node", kTexels, {PT_NODE_RECORD(PT_FIELD_LIST)}};
-  return l;
-}
-const RecordLayout& prim_layout() {
-  using namespace prim_rec;
-  static const RecordLayout l{"prim", kTexels, {PT_PRIM_RECORD(PT_FIELD_LIST)}};
-  return l;
-}
-const RecordLayout& vertex_layout() {
-  using namespace vertex_rec;
-  static const RecordLayout l{"vertex", kTexels, {PT_VERTEX_RECORD(PT_FIELD_LIST)}};
-  return l;
-}
-const RecordLayout& uv_layout() {
-  using namespace uv_rec;
-  static const RecordLayout l{"uv", kTexels, {PT_UV_RECORD(PT_FIELD_LIST)}};
-  return l;
-}
+#define PT_LAYOUT_DEF(name, texels, fields)                                           \
+  const RecordLayout& name##_layout() {                                               \
+    using namespace name##_rec;                                                       \
+    static const RecordLayout l{#name, kTexels, {fields(PT_FIELD_LIST)}};             \
+    return l;                                                                         \
+  }
+PT_RECORDS(PT_LAYOUT_DEF)
+#undef PT_LAYOUT_DEF
 #undef PT_FIELD_LIST
 
 std::string glsl_record(const RecordLayout& l) {

@@ -89,42 +89,25 @@ struct RecordLayout {
 
 #define PT_FIELD_CONST(t, n, tex, comp) inline constexpr Field n{#t, #n, tex, comp, glsl_width(#t)};
 #define PT_FIELD_REF(t, n, tex, comp) n,
-namespace shape_rec {
-inline constexpr int kTexels = 4;
-PT_SHAPE_RECORD(PT_FIELD_CONST)
-}
-namespace material_rec {
-inline constexpr int kTexels = 4;
-PT_MATERIAL_RECORD(PT_FIELD_CONST)
-}
-namespace node_rec {
-inline constexpr int kTexels = 2;
-PT_NODE_RECORD(PT_FIELD_CONST)
-}
-namespace prim_rec {
-inline constexpr int kTexels = 4;
-PT_PRIM_RECORD(PT_FIELD_CONST)
-}
-namespace vertex_rec {
-inline constexpr int kTexels = 2;
-PT_VERTEX_RECORD(PT_FIELD_CONST)
-}
-namespace light_rec {
-inline constexpr int kTexels = 1;
-PT_LIGHT_RECORD(PT_FIELD_CONST)
-}
-namespace uv_rec {
-inline constexpr int kTexels = 2;
-PT_UV_RECORD(PT_FIELD_CONST)
-}
+// Every record kind: X(name, texels per record, its field list). Each gets a namespace
+// <name>_rec of Field constants (the packer's side) and <name>_layout() (the generator's).
+#define PT_RECORDS(X)                 \
+  X(shape, 4, PT_SHAPE_RECORD)        \
+  X(material, 4, PT_MATERIAL_RECORD)  \
+  X(light, 1, PT_LIGHT_RECORD)        \
+  X(node, 2, PT_NODE_RECORD)          \
+  X(prim, 4, PT_PRIM_RECORD)          \
+  X(vertex, 2, PT_VERTEX_RECORD)      \
+  X(uv, 2, PT_UV_RECORD)
 
-const RecordLayout& shape_layout();
-const RecordLayout& material_layout();
-const RecordLayout& light_layout();
-const RecordLayout& node_layout();
-const RecordLayout& prim_layout();
-const RecordLayout& vertex_layout();
-const RecordLayout& uv_layout();
+#define PT_RECORD_DECL(name, texels, fields) \
+  namespace name##_rec {                     \
+  inline constexpr int kTexels = texels;     \
+  fields(PT_FIELD_CONST)                     \
+  }                                          \
+  const RecordLayout& name##_layout();
+PT_RECORDS(PT_RECORD_DECL)
+#undef PT_RECORD_DECL
 
 // GLSL for one layout: the struct, the sampler uniform and the loader function.
 std::string glsl_record(const RecordLayout& layout);
