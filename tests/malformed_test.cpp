@@ -52,9 +52,12 @@ std::string work_dir() {
 std::string scene_for(const Case& c) {
   const std::string abs = repo_path("tests/malformed/" + c.file);
   if (c.format() == "xml") return abs;
-  const std::string ref = c.format() == "json" || c.format() == "obj"
-                              ? "<Objects><Mesh src=\"" + abs + "\"><Diffuse/></Mesh></Objects>\n"
-                              : "<Environment map=\"" + abs + "\"/>\n<Objects><Sphere center=\"0 0 0\" radius=\"1\"><Diffuse/></Sphere></Objects>\n";
+  // Image formats reach the loader as an environment map, every other one as a mesh
+  // (a new mesh format, e.g. tests/malformed/gltf/, needs no change here).
+  const std::string f = c.format();
+  const bool image = f == "hdr" || f == "png" || f == "pfm" || f == "jpg" || f == "exr";
+  const std::string ref = !image ? "<Objects><Mesh src=\"" + abs + "\"><Diffuse/></Mesh></Objects>\n"
+                                 : "<Environment map=\"" + abs + "\"/>\n<Objects><Sphere center=\"0 0 0\" radius=\"1\"><Diffuse/></Sphere></Objects>\n";
   const std::string path = work_dir() + "/wrap-" + c.base() + ".xml";
   std::ofstream(path) << "<SceneLevel>\n<Camera position=\"0 0 10\"/>\n" << ref << "</SceneLevel>\n";
   return path;

@@ -13,6 +13,7 @@
 #include "cli/options.h"
 #include "core/file_io.h"
 #include "core/image.h"
+#include "core/image_decode.h"
 #include "core/metrics.h"
 #include "core/svg_plot.h"
 #include "render/pacing.h"
@@ -28,10 +29,9 @@ int run_bench(const Options& o) {
   const Scene scene = load_scene(o);
   std::vector<float> ref(4, float(o.reference_value));
   if (!o.reference.empty()) {
-    int w = 0, h = 0;
-    const bool pfm = o.reference.size() > 4 && o.reference.compare(o.reference.size() - 4, 4, ".pfm") == 0;
-    if (!(pfm ? read_pfm(o.reference, &w, &h, &ref) : read_hdr(o.reference, &w, &h, &ref)))
-      throw std::runtime_error(o.reference + ": cannot read the reference image");
+    FloatImage img = load_float_image(o.reference);  // an error names the file and where it broke
+    const int w = img.width, h = img.height;
+    ref = std::move(img.rgba);
     if (w != o.width || h != o.height)
       throw std::runtime_error(o.reference + ": reference is " + std::to_string(w) + "x" + std::to_string(h) + ", not " +
                                std::to_string(o.width) + "x" + std::to_string(o.height));
