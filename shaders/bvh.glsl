@@ -90,3 +90,11 @@ Hit scene_intersect(Ray r) { return trace_scene(r, T_INF, false, -1); }
 
 // Whether anything but shape `skip` lies on the ray before tmax.
 bool occluded(Ray r, float tmax, int skip) { return trace_scene(r, tmax, true, skip).id >= 0; }
+
+// A shadow ray from surface point p (geometric normal n) along wi to a light `dist` away
+// (T_INF: the environment; light_shape -1): whether nothing but the light is in between.
+// The light itself is skipped, so its own surface never shadows; the distance keeps a
+// relative margin of 1e-4 for what touches the light.
+bool light_visible(vec3 p, vec3 n, vec3 wi, float dist, int light_shape) {
+  return !occluded(Ray(offset_origin(p, n, wi), wi), dist * 0.9999, light_shape);
+}

@@ -53,11 +53,10 @@ vec3 trace_path(Ray r) {
     // of the two carries nothing, and rays leave off the geometric surface.
     bool shading_normal = false;
 #ifdef HAS_SHAPE_MESH
-    g_prim = h.prim;
     if (s.kind == SHAPE_MESH) {
       vec3 ns;
       vec2 uv_unused;
-      if (mesh_attributes(h, ns, uv_unused) && dot(ns, ns) > 0.0) {
+      if (mesh_attributes(h.prim, h.p, ns, uv_unused) && dot(ns, ns) > 0.0) {
         ns = dot(ns, n) < 0.0 ? -ns : ns;  // onto the side the ray came from, as n
         if (dot(ns, -r.d) > 0.0) {  // a normal facing away from the viewer is not used
           fr = frame_from(ns);
@@ -72,7 +71,7 @@ vec3 trace_path(Ray r) {
     // (whose side tests below use the geometric normal: see textured_resolve.glsl).
     if (m.kind == MAT_TEXTURED) {
       shading_normal = true;
-      m = resolve_textured(m, s, h.id, p, h.n, n, -r.d, fr);
+      m = resolve_textured(m, s, h, n, -r.d, fr);
       wo = to_local(fr, -r.d);
     }
 #endif
@@ -84,9 +83,7 @@ vec3 trace_path(Ray r) {
         vec3 f = material_eval(m, wo, wl, entering, pdf_b);
         if (shading_normal && (dot(ls.wi, n) > 0.0) != (wl.z > 0.0)) f = vec3(0.0);
         if (max3(f) > 0.0) {
-          // Any hit short of the light's surface blocks it; the light itself is skipped, so
-          // its own surface never shadows (the distance keeps a relative margin of 1e-4).
-          if (!occluded(Ray(offset_origin(p, n, ls.wi), ls.wi), ls.dist * 0.9999, ls.shape))
+          if (light_visible(p, n, ls.wi, ls.dist, ls.shape))
             L += beta * f * ls.radiance * (power_heuristic(ls.pdf, pdf_b) / ls.pdf);
         }
       }

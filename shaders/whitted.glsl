@@ -38,20 +38,20 @@ vec3 whitted_direct(MaterialRec m, Frame fr, vec3 p, vec3 n, vec3 wo, bool enter
     float pdf, dist;
     if (!light_sample_shape(load_shape(l.shape), p, next4().xy, wi, pdf, dist) || !(pdf > 0.0)) continue;
     vec3 f = material_eval(m, wo, to_local(fr, wi), entering, pdf_b);
-    if (max3(f) > 0.0 && !occluded(Ray(offset_origin(p, n, wi), wi), dist * 0.9999, l.shape)) L += f * l.radiance / pdf;
+    if (max3(f) > 0.0 && light_visible(p, n, wi, dist, l.shape)) L += f * l.radiance / pdf;
   }
 #ifdef HAS_ENV_MAP
   vec3 wi, rad;
   float pdf;
   if (env_sample(next4().xy, wi, pdf, rad)) {
     vec3 f = material_eval(m, wo, to_local(fr, wi), entering, pdf_b);
-    if (max3(f) > 0.0 && !occluded(Ray(offset_origin(p, n, wi), wi), T_INF, -1)) L += f * rad / pdf;
+    if (max3(f) > 0.0 && light_visible(p, n, wi, T_INF, -1)) L += f * rad / pdf;
   }
 #else
   BsdfSample bs;
   if (max3(u_env_color) > 0.0 && material_sample(m, wo, entering, next4().xyz, bs)) {
     vec3 wi = normalize(from_local(fr, bs.wi));
-    if (!occluded(Ray(offset_origin(p, n, wi), wi), T_INF, -1)) L += bs.weight * u_env_color;
+    if (light_visible(p, n, wi, T_INF, -1)) L += bs.weight * u_env_color;
   }
 #endif
   return L;

@@ -97,13 +97,13 @@ TEST_CASE("uv mappings: the tangent frame follows the uv gradient on every shape
       "  if (kind == 2) { s.kind = SHAPE_PLANE; s.a = normalize(vec3(rand01() - 0.5, rand01() - 0.5, rand01() - 0.5)); s.radius = 0.7; n = s.a; p = frame_from(n).t * 3.0 * rand01() + n * 0.7; }\n"
       "  if (kind == 3) { s.kind = SHAPE_TRIANGLE; s.a = vec3(0.0); s.b = vec3(2.0, 0.5, 0.0); s.c = vec3(0.3, 1.5, 1.0); n = normalize(cross(s.b - s.a, s.c - s.a));\n"
       "    float r = 0.2 + 0.5 * rand01(); p = s.a + r * (s.b - s.a) * 0.5 + r * (s.c - s.a) * 0.5; }\n"
-      "  SurfaceUv su = surface_uv(s, 0, p, n);\n"
+      "  SurfaceUv su = surface_uv(s, Hit(1.0, 0, n, p, -1));\n"
       "  if (kind == 3) { su.uv = uv_triangle(s, t, p, n); su.tangent = tangent_triangle(s, t, p, n); }\n"
       "  vec3 b = su.tangent.w * cross(n, su.tangent.xyz);\n  float e = 1e-3;\n"
       "  vec3 pt = p + e * su.tangent.xyz, pb = p + e * b;\n  if (kind == 0) { pt = s.a + 2.0 * normalize(pt - s.a); pb = s.a + 2.0 * normalize(pb - s.a); }\n"
       "  vec3 nt = kind == 0 ? normalize(pt - s.a) : n, nb = kind == 0 ? normalize(pb - s.a) : n;\n"
-      "  vec2 ut = kind == 3 ? uv_triangle(s, t, pt, n) : surface_uv(s, 0, pt, nt).uv;\n"
-      "  vec2 ub = kind == 3 ? uv_triangle(s, t, pb, n) : surface_uv(s, 0, pb, nb).uv;\n"
+      "  vec2 ut = kind == 3 ? uv_triangle(s, t, pt, n) : surface_uv(s, Hit(1.0, 0, nt, pt, -1)).uv;\n"
+      "  vec2 ub = kind == 3 ? uv_triangle(s, t, pb, n) : surface_uv(s, Hit(1.0, 0, nb, pb, -1)).uv;\n"
       "  vec2 dt = ut - su.uv, db = ub - su.uv;\n"
       // An affine uv map need not be orthogonal (the triangle's is not): there b only has to
       // point to the side of dp/dv, and moving along it may change u.

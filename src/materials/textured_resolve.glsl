@@ -25,11 +25,12 @@ vec3 textured_normal(MaterialRec m, vec2 uv, vec3 n_out, vec4 tangent) {
   return dot(d, d) == 0.0 ? n_out : normalize(d + max(nt.z, 1e-3) * n_out);
 }
 
-// s, id, p, n_out: the hit (outward normal); n: the geometric normal on the viewer's side;
-// wo: unit direction to the viewer. Returns the record with tint = (1 - s) rho and
-// color2 = s, and sets fr to the shading frame.
-MaterialRec resolve_textured(MaterialRec m, ShapeRec s, int id, vec3 p, vec3 n_out, vec3 n, vec3 wo, out Frame fr) {
-  SurfaceUv su = surface_uv(s, id, p, n_out);
+// s, h: the hit's shape and the hit (h.n the outward normal); n: the geometric normal on
+// the viewer's side; wo: unit direction to the viewer. Returns the record with
+// tint = (1 - s) rho and color2 = s, and sets fr to the shading frame.
+MaterialRec resolve_textured(MaterialRec m, ShapeRec s, Hit h, vec3 n, vec3 wo, out Frame fr) {
+  vec3 n_out = h.n;
+  SurfaceUv su = surface_uv(s, h);
   vec2 uv = su.uv * m.uv_scale + m.uv_offset;
   vec3 ns = textured_normal(m, uv, n_out, su.tangent);
   if (dot(n, n_out) < 0.0) ns = -ns;  // the back side sees the same relief from below

@@ -91,6 +91,9 @@ PackedScene pack_scene(const Scene& scene) {
   std::vector<PrimRef> refs;
   std::vector<Aabb> boxes;
   std::vector<int> vertex_base(scene.shapes.size(), -1);
+  // Each mesh instance's vertices in world space, transformed once: the boxes and the
+  // primitives written after the build both read them.
+  std::vector<std::vector<glm::vec3>> world(scene.shapes.size());
   for (size_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& s = scene.shapes[i];
     switch (info(s.kind).bvh) {
@@ -143,9 +146,12 @@ PackedScene pack_scene(const Scene& scene) {
             }
           }
         }
+        std::vector<glm::vec3>& w = world[i];
+        w.reserve(m.positions.size());
+        for (const glm::vec3& q : m.positions) w.emplace_back(s.transform * glm::vec4(q, 1.0f));
         for (size_t t = 0; t < m.triangles.size(); ++t) {
-          glm::vec3 v[3];
-          mesh_triangle(scene, s, t, v);
+          const glm::uvec3 tri = m.triangles[t];
+          const glm::vec3 v[3] = {w[tri.x], w[tri.y], w[tri.z]};
           if (degenerate(v)) continue;
           Aabb b;
           for (const glm::vec3& q : v) b.grow(q);
@@ -180,9 +186,13 @@ PackedScene pack_scene(const Scene& scene) {
     glm::vec3 v[3] = {s.a, s.b, s.c};
     glm::vec3 attr(-1.0f);
     if (s.kind == ShapeKind::Mesh) {
-      mesh_triangle(scene, s, size_t(ref.tri), v);
+      const glm::uvec3 tri = scene.meshes[size_t(s.mesh)]->triangles[size_t(ref.tri)];
+      const std::vector<glm::vec3>& w = world[size_t(ref.shape)];
+      v[0] = w[tri.x];
+      v[1] = w[tri.y];
+      v[2] = w[tri.z];
       if (vertex_base[size_t(ref.shape)] >= 0)
-        attr = glm::vec3(scene.meshes[size_t(s.mesh)]->triangles[size_t(ref.tri)]) + float(vertex_base[size_t(ref.shape)]);
+        attr = glm::vec3(tri) + float(vertex_base[size_t(ref.shape)]);
     }
     p.prims.set(k, prim_rec::tag, ref.shape);
     p.prims.set(k, prim_rec::v0, v[0]);

@@ -15,12 +15,9 @@ enum Unit {
   kNodeUnit = 7, kPrimUnit = 8, kVertexUnit = 9, kMapsUnit = 10, kUvUnit = 11
 };
 
-Texture upload(const RecordBuffer& b, const char* what) {
-  GLint max_size = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-  if (max_size < kDataWidth || b.rows() > max_size)
-    throw GlError(std::string("the scene's ") + what + " need a " + std::to_string(kDataWidth) + " x " + std::to_string(b.rows()) +
-                  " texture; this GPU allows " + std::to_string(max_size) + " x " + std::to_string(max_size));
+// The sizes were checked against limits_ in set_scene, before any state changed (uv
+// records take 2 texels per shape where shape records take 4: covered by the shapes' check).
+Texture upload(const RecordBuffer& b) {
   const std::vector<float> t = b.texels();
   return Texture(kDataWidth, b.rows(), GL_RGBA32F, t.data());
 }
@@ -123,20 +120,19 @@ void Renderer::set_scene(const Scene& scene) {
     sh_valid_ = false;
   env_ = e;
   update_sh();
-  shape_tex_ = upload(p.shapes, "shapes");
-  material_tex_ = upload(p.materials, "materials");
-  light_tex_ = upload(p.lights, "lights");
-  node_tex_ = upload(p.nodes, "BVH nodes");
-  prim_tex_ = upload(p.prims, "primitives");
-  vertex_tex_ = upload(p.vertices, "mesh vertices");
+  shape_tex_ = upload(p.shapes);
+  material_tex_ = upload(p.materials);
+  light_tex_ = upload(p.lights);
+  node_tex_ = upload(p.nodes);
+  prim_tex_ = upload(p.prims);
+  vertex_tex_ = upload(p.vertices);
   if (textured) {
     maps_ = TextureArray(maps.width, maps.height, maps.layers, maps.texels.data());
-    uv_tex_ = upload(pack_uvs(scene), "uv records");
+    uv_tex_ = upload(pack_uvs(scene));
   } else {
     maps_ = TextureArray();
     uv_tex_ = Texture();
   }
-  num_shapes_ = p.shapes.count();
   num_lights_ = p.lights.count();
   num_unbounded_ = p.unbounded;
   num_nodes_ = p.nodes.count();

@@ -131,7 +131,7 @@ class Renderer {
   int sweep_spp_ = 1;     // samples per pixel of the sweep in progress
   bool needs_clear_ = true;
   int width_ = 0, height_ = 0;
-  int num_shapes_ = 0, num_lights_ = 0, num_unbounded_ = 0, num_nodes_ = 0;
+  int num_lights_ = 0, num_unbounded_ = 0, num_nodes_ = 0;
   float motion_bound_ = 1.0f;
   BvhStats bvh_stats_;
   bool dot_weight_ = true;

@@ -10,7 +10,8 @@
 namespace pt {
 
 // A Radiance .hdr (or PFM) as an EnvImage, rows top (theta = 0) to bottom. Throws
-// std::runtime_error naming the file when it cannot be read or holds unusable values.
+// std::runtime_error naming the file (and the byte or pixel) when it cannot be read,
+// has an unusable size, or holds negative, non-finite or absurd (> 1e9) values.
 std::shared_ptr<const EnvImage> load_env_map(const std::string& path);
 
 // Sets env to the map in `path` (rotation and intensity kept). Throws like load_env_map.

@@ -19,7 +19,6 @@
 #include "scene/env_map.h"
 #include "scene/mesh_generate.h"
 #include "scene/mesh_gltf.h"
-#include "core/image_decode.h"
 #include "scene/mesh_json.h"
 #include "scene/mesh_obj.h"
 #include "scene/textured_loader.h"
@@ -199,30 +198,11 @@ struct Loader {
   }
 
   std::shared_ptr<const EnvImage> load_env_image(XmlAttrs& a, const std::string& path) {
-    auto img = std::make_shared<EnvImage>();
-    std::vector<float> rgba;
     try {
-      FloatImage f = load_float_image(path);
-      img->width = f.width;
-      img->height = f.height;
-      rgba = std::move(f.rgba);
-    } catch (const InputError& err) {
-      a.fail(std::string("cannot load the environment map: ") + err.what());
+      return load_env_map(path);
+    } catch (const std::runtime_error& e) {
+      a.fail(e.what());
     }
-    if (img->width < 2 || img->height < 1 || img->width > 16384 || img->height > 8192)
-      a.fail("environment map '" + path + "' has an unusable size " + std::to_string(img->width) + "x" + std::to_string(img->height));
-    // read_hdr gives rows bottom to top; the map is kept top (theta = 0) to bottom.
-    const size_t row = size_t(img->width) * 4;
-    img->rgba.resize(rgba.size());
-    for (int y = 0; y < img->height; ++y)
-      std::copy_n(&rgba[size_t(img->height - 1 - y) * row], row, &img->rgba[size_t(y) * row]);
-    for (size_t i = 0; i < img->rgba.size(); ++i) {
-      const float v = img->rgba[i];
-      if (!std::isfinite(v) || v < 0.0f || v > kMaxMagnitude)
-        a.fail("environment map '" + path + "' pixel (" + std::to_string(i / 4 % size_t(img->width)) + ", " +
-               std::to_string(i / 4 / size_t(img->width)) + ") from the top is negative, non-finite or absurd (> 1e9)");
-    }
-    return img;
   }
 
 

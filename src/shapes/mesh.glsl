@@ -12,16 +12,14 @@ vec3 mesh_barycentrics(PrimRec t, vec3 p) {
   return vec3(1.0 - b1 - b2, b1, b2);
 }
 
-int g_prim;  // the primitive of the hit being shaded (set by the integrator)
-
-// The interpolated shading normal (unit; vec3(0) when the mesh has no normals) and uv of
-// a hit on a mesh triangle; false when the mesh has no vertex attributes.
-bool mesh_attributes(Hit h, out vec3 ns, out vec2 uv) {
+// The interpolated shading normal (unit; vec3(0) when the mesh has no normals) and uv at
+// point p of mesh triangle `prim`; false when the mesh has no vertex attributes.
+bool mesh_attributes(int prim, vec3 p, out vec3 ns, out vec2 uv) {
   ns = vec3(0.0);
   uv = vec2(0.0);
-  PrimRec t = load_prim(h.prim);
+  PrimRec t = load_prim(prim);
   if (t.attr.x < 0.0) return false;
-  vec3 b = mesh_barycentrics(t, h.p);
+  vec3 b = mesh_barycentrics(t, p);
   VertexRec a = load_vertex(int(t.attr.x)), c = load_vertex(int(t.attr.y)), d = load_vertex(int(t.attr.z));
   vec3 n = b.x * a.normal + b.y * c.normal + b.z * d.normal;
   ns = dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
@@ -33,12 +31,9 @@ bool mesh_attributes(Hit h, out vec3 ns, out vec2 uv) {
 // Image maps on meshes: the vertex uv interpolated at the hit, and the tangent along
 // dp/du from the triangle's uv parameterisation (w: the handedness of dp/dv).
 vec2 uv_mesh(ShapeRec s, int prim, vec3 p, vec3 n) {
-  Hit h = no_hit();
-  h.prim = prim;
-  h.p = p;
   vec3 ns;
   vec2 uv;
-  mesh_attributes(h, ns, uv);
+  mesh_attributes(prim, p, ns, uv);
   return uv;
 }
 
