@@ -138,6 +138,15 @@ TEST_CASE("a scene lists the files it references", "[picking][loader]") {
   REQUIRE(s.files.size() == 2);
   CHECK(s.files[0] == path);
   CHECK(s.files[1].find("reference/cube.json") != std::string::npos);
+  // Image maps are references too (an edited texture must re-render in the watch loop).
+  const Scene t = load_scene_file(repo_path("scenes/seed/03-balls-solid-table-wood.xml"));
+  for (const char* map : {"wood_diffuse.png", "wood_specular.png", "wood_normal.png"})
+    CHECK(std::any_of(t.files.begin(), t.files.end(), [&](const std::string& f) { return f.find(map) != std::string::npos; }));
+  // With file references off (the fuzzers), an image path is refused like a mesh path.
+  CHECK_THROWS_WITH(load_scene_text("<SceneLevel><Camera position=\"0 0 5\"/><Objects><Plane normal=\"0 1 0\" d=\"0\">"
+                                    "<Textured diffuse=\"x.png\"/></Plane></Objects></SceneLevel>",
+                                    "t.xml", false),
+                    Catch::Contains("file references are disabled"));
 }
 
 TEST_CASE("selection edits re-upload the scene and never recompile", "[gpu][picking]") {

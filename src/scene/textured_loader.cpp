@@ -35,10 +35,10 @@ ImageMap decode_image_map(const LoadedImage& img, bool normal) {
 
 namespace {
 
-int load_map(XmlAttrs& a, Scene& scene, const char* attr, bool normal) {
+int load_map(XmlAttrs& a, Scene& scene, const char* attr, bool normal, const PathResolver& resolve) {
   if (!a.has(attr)) return -1;
   const std::string given = a.text(attr);
-  const std::string path = !given.empty() && given[0] == '/' ? given : directory_of(a.file()) + "/" + given;
+  const std::string path = resolve(a, given);
   for (size_t i = 0; i < scene.images.size(); ++i)
     if (scene.images[i]->path == path && scene.images[i]->normal == normal) return int(i);
   LoadedImage img;
@@ -56,10 +56,10 @@ int load_map(XmlAttrs& a, Scene& scene, const char* attr, bool normal) {
 
 }  // namespace
 
-void parse_textured_attrs(XmlAttrs& a, Scene& scene, Material& m) {
-  m.diffuse_map = load_map(a, scene, "diffuse", false);
-  m.specular_map = load_map(a, scene, "specular", false);
-  m.normal_map = load_map(a, scene, "normal", true);
+void parse_textured_attrs(XmlAttrs& a, Scene& scene, Material& m, const PathResolver& resolve) {
+  m.diffuse_map = load_map(a, scene, "diffuse", false, resolve);
+  m.specular_map = load_map(a, scene, "specular", false, resolve);
+  m.normal_map = load_map(a, scene, "normal", true, resolve);
   m.exponent = a.number("n", 50.0f);
   if (!(m.exponent > 0.0f) || m.exponent > 1e5f) a.fail("'n' must be in (0, 100000]");
   m.uv_scale = a.has("uvScale") ? a.vec2("uvScale") : glm::vec2(1.0f);

@@ -499,7 +499,9 @@ void parse_fresnel_composite(Loader& l, XmlAttrs& a, const XMLElement* e, Materi
 
 // <Textured diffuse="wood.png" specular=".." normal=".." n="50" uvScale="su sv"
 // uvOffset="ou ov"/>: see scene/textured_loader.h.
-void parse_textured(Loader& l, XmlAttrs& a, const XMLElement*, Material& m) { parse_textured_attrs(a, l.scene, m); }
+void parse_textured(Loader& l, XmlAttrs& a, const XMLElement*, Material& m) {
+  parse_textured_attrs(a, l.scene, m, [&l](XmlAttrs& at, const std::string& p) { return l.resolve_path(at, p); });
+}
 
 }  // namespace
 
