@@ -188,7 +188,8 @@ size_t check_png_structure(const std::string& b, const std::string& path) {
     if (!ihdr) {
       if (type != "IHDR" || len != 13) fail_at(path, at, "the first chunk must be a 13-byte IHDR");
       const long long w = be32(b, at + 8), h = be32(b, at + 12);
-      if (w < 1 || h < 1 || w * h > kMaxImagePixels)
+      // Each side is bounded before the product: two 32-bit sides overflow a 64-bit product.
+      if (w < 1 || h < 1 || w > kMaxImagePixels || h > kMaxImagePixels || w * h > kMaxImagePixels)
         fail_at(path, at + 8, "unusable size " + std::to_string(w) + "x" + std::to_string(h));
       ihdr = true;
     }
