@@ -20,9 +20,20 @@ uniform float u_focal_distance;  // along u_cam_fwd
 uniform float u_shutter;         // camera samples are spread over [0, u_shutter]
 uniform vec3 u_env_color;
 
+// Outputs: the new running mean, and running sums per pixel: x = non-finite samples
+// (dropped), y = rays cast. The fragment pass writes them to two colour targets; the
+// compute kernel (PT_COMPUTE: native GL ES 3.1+) to the same textures as images, over
+// 8x8-pixel groups covering the rows [u_origin.y, u_row_end) of the band.
+#ifdef PT_COMPUTE
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) writeonly uniform highp image2D o_accum_image;
+layout(rgba32f, binding = 1) writeonly uniform highp image2D o_stats_image;
+uniform ivec2 u_origin;
+uniform int u_row_end;
+#else
 layout(location = 0) out vec4 o_accum;
-// Running sums per pixel: x = non-finite samples (dropped), y = rays cast.
 layout(location = 1) out vec4 o_stats;
+#endif
 
 // A sample is bad when any channel's exponent bits are all ones (NaN or Inf): a bit
 // test, because a driver may assume finite math and fold isnan/isinf away.
@@ -33,8 +44,7 @@ bool non_finite(vec3 c) {
 
 vec3 trace_path(Ray r);
 
-void main() {
-  ivec2 px = ivec2(gl_FragCoord.xy);
+void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {
   vec3 sum = vec3(0.0);
   float sum_l2 = 0.0;
   float bad = 0.0;
@@ -66,7 +76,20 @@ void main() {
   }
   // rgb: mean radiance; a: mean squared luminance (for the per-pixel variance).
   vec4 cur = vec4(sum, sum_l2) / float(u_spp);
-  o_accum = u_blend >= 1.0 ? cur : mix(texelFetch(u_accum, px, 0), cur, u_blend);
+  accum = u_blend >= 1.0 ? cur : mix(texelFetch(u_accum, px, 0), cur, u_blend);
   vec4 prev_stats = u_blend >= 1.0 ? vec4(0.0) : texelFetch(u_stats_in, px, 0);
-  o_stats = prev_stats + vec4(bad, float(g_rays), 0.0, 0.0);
+  stats = prev_stats + vec4(bad, float(g_rays), 0.0, 0.0);
+}
+
+void main() {
+#ifdef PT_COMPUTE
+  ivec2 px = u_origin + ivec2(gl_GlobalInvocationID.xy);
+  if (px.x >= int(u_size.x) || px.y >= u_row_end) return;
+  vec4 accum, stats;
+  render_pixel(px, accum, stats);
+  imageStore(o_accum_image, px, accum);
+  imageStore(o_stats_image, px, stats);
+#else
+  render_pixel(ivec2(gl_FragCoord.xy), o_accum, o_stats);
+#endif
 }

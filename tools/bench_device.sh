@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed or bvh}"
+part="${1:?part: cornell, scenes, speed, bvh or kernels}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -71,6 +71,22 @@ case "$part" in
       } > "$f"
       $B render "$f" --size $S --spp 64 --out "$w/objects-$n.png"
     done
+    ;;
+  kernels)
+    # The fragment pass (what WebGL 2 runs) against the compute kernel (GL ES 3.1), same
+    # code and estimate: each scene for at most 8 s at 1080p, then 16 spp of each kernel
+    # compared byte for byte.
+    for s in scenes/reference/scene0.xml scenes/reference/scene1.xml scenes/reference/scene2.xml scenes/cornell-box.xml \
+             scenes/gltf-instances.xml scenes/bench/million.xml; do
+      n=$(basename "$s" .xml)
+      for k in fragment compute; do
+        $B render "$s" --size $S --spp 100000 --seconds 8 --kernel $k --out "$w/$n-$k.png"
+        $B render "$s" --size 640x360 --spp 16 --spp-per-pass 4 --kernel $k --out "$w/$n-$k-16.pfm" > /dev/null
+      done
+      if cmp -s "$w/$n-fragment-16.pfm" "$w/$n-compute-16.pfm"; then echo "$n: 16 spp identical (fragment, compute)"
+      else echo "$n: 16 spp DIFFER: $(cmp "$w/$n-fragment-16.pfm" "$w/$n-compute-16.pfm" | head -1)"; fi
+    done
+    $B render scenes/bench/million.xml --size $S --spp 100000 --seconds 8 --bounces 1 --kernel compute --out "$w/million-1bounce.png"
     ;;
 esac
 rm -f "$w"/*.pfm

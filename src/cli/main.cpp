@@ -46,7 +46,7 @@ int run_render(const Options& o) {
   const double set_ms = seconds_since(ts) * 1e3 - r.compile_ms();
   std::printf("scene: %s (%zu objects, %zu materials, %zu lights), loaded in %.0f ms\n", o.scene.c_str(), scene.shapes.size(),
               scene.materials.size(), scene.lights.size(), load_ms);
-  std::printf("mode: %s\n", kRenderModeNames[int(settings.mode)]);
+  std::printf("mode: %s, %s kernel\n", kRenderModeNames[int(settings.mode)], r.using_compute() ? "compute" : "fragment");
   const Renderer::BvhStats& bs = r.bvh_stats();
   std::printf("BVH: %d primitives, %d nodes, depth %d, built in %.0f ms; packed and uploaded in %.0f ms in all\n", bs.primitives,
               bs.nodes, bs.depth, bs.build_ms, set_ms);

@@ -26,6 +26,8 @@ const char* const kUsage =
     "  --mode M          path (path tracer, default), whitted (ray tracer: direct light, mirrors,\n"
     "                    refraction) or sh (environment irradiance from spherical harmonics)\n"
     "  --env FILE.hdr    an equirectangular HDR map replacing the scene's environment\n"
+    "  --kernel K        compute (default where the context is GL ES 3.1+, else fragment) or fragment\n"
+    "                    (the WebGL 2 pass the page runs); same estimate, see docs/benchmarks.md\n"
     "render: --spp N (default 64), or until --seconds S if that comes first (references);\n"
     "        --out .png is tone-mapped, .hdr/.pfm linear radiance (--out may repeat);\n"
     "        --exposure X multiplies before the tone map, 'auto' maps the log-average to 0.18\n"
@@ -62,6 +64,7 @@ Options parse_options(int argc, char** argv, bool bench) {
   if (argc < 1) usage_error("a scene file is needed");
   Options o;
   o.scene = argv[0];
+  o.settings.compute = true;  // natively the faster kernel where there is one
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&]() -> const char* {
@@ -89,6 +92,10 @@ Options parse_options(int argc, char** argv, bool bench) {
     } else if (a == "--mode") {
       const char* v = next();
       if (!render_mode_from_name(v, &o.settings.mode)) usage_error(std::string("unknown mode: ") + v);
+    } else if (a == "--kernel") {
+      const std::string v = next();
+      if (v != "compute" && v != "fragment") usage_error("--kernel takes compute or fragment");
+      o.settings.compute = v == "compute";
     } else if (a == "--env") {
       o.env = next();
     } else if (!bench && a == "--spp") {

@@ -67,6 +67,20 @@ Program Program::start(const ShaderSource& vs, const ShaderSource& fs) {
   return p;
 }
 
+#ifndef __EMSCRIPTEN__
+Program Program::start_compute(const ShaderSource& cs) {
+  Program p;
+  p.started_ = std::chrono::steady_clock::now();
+  p.vs_src_ = cs;
+  p.vs_ = start_shader(GL_COMPUTE_SHADER, cs);
+  p.id_ = glCreateProgram();
+  glAttachShader(p.id_, p.vs_);
+  glLinkProgram(p.id_);
+  PT_GL_CHECK("glAttachShader/glLinkProgram (compute)");
+  return p;
+}
+#endif
+
 bool Program::completed() const {
   if (!vs_ || !parallel_compile()) return true;  // finished, or finish() is the only way to know
   GLint done = 0;
@@ -84,14 +98,14 @@ void Program::finish() {
     // The shaders' own logs first (a compile error names the snippet file), else the link log.
     try {
       check_shader(v, vs_src_);
-      check_shader(f, fs_src_);
-      error = "GLSL link error:\n" + fs_src_.map_log(info_log(id_, glGetProgramiv, glGetProgramInfoLog));
+      if (f) check_shader(f, fs_src_);
+      error = "GLSL link error:\n" + (f ? fs_src_ : vs_src_).map_log(info_log(id_, glGetProgramiv, glGetProgramInfoLog));
     } catch (const GlError& e) {
       error = e.what();
     }
   }
   glDeleteShader(v);
-  glDeleteShader(f);
+  if (f) glDeleteShader(f);
   vs_src_ = fs_src_ = ShaderSource{};
   if (!error.empty()) {
     glDeleteProgram(id_);
@@ -102,7 +116,8 @@ void Program::finish() {
 }
 
 Program::~Program() {
-  if (vs_) glDeleteShader(vs_), glDeleteShader(fs_);
+  if (vs_) glDeleteShader(vs_);
+  if (fs_) glDeleteShader(fs_);
   if (id_) glDeleteProgram(id_);
 }
 

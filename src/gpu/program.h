@@ -22,6 +22,10 @@ class Program {
   // KHR_parallel_shader_compile the driver compiles in the background (a page keeps
   // drawing frames meanwhile); completed() says when finish() will not block.
   static Program start(const ShaderSource& vs, const ShaderSource& fs);
+#ifndef __EMSCRIPTEN__
+  // A compute program (GL ES 3.1+), started the same way.
+  static Program start_compute(const ShaderSource& cs);
+#endif
   bool completed() const;
   // Waits for the result; throws GlError with the mapped log if compiling or linking failed.
   void finish();
@@ -63,7 +67,7 @@ class Program {
 
  private:
   GLuint id_ = 0;
-  GLuint vs_ = 0, fs_ = 0;  // until finish(): their logs name the snippet files
+  GLuint vs_ = 0, fs_ = 0;  // until finish(): their logs name the snippet files (compute: vs_ only)
   ShaderSource vs_src_, fs_src_;
   std::chrono::steady_clock::time_point started_;
   std::unordered_map<std::string, GLint> locs_;

@@ -14,6 +14,11 @@ Texture::Texture(int w, int h, GLenum internal_format, const float* data) : w_(w
   const GLenum type = internal_format == GL_RGBA8 ? GL_UNSIGNED_BYTE
                       : internal_format == GL_RGBA16F ? GL_HALF_FLOAT
                                                        : GL_FLOAT;
+  if (!data && w > 0 && h > 0) {
+    glTexStorage2D(GL_TEXTURE_2D, 1, internal_format, w, h);
+    PT_GL_CHECK("glTexStorage2D");  // GL_OUT_OF_MEMORY, or a size over the limit
+    return;
+  }
   glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal_format), w, h, 0, GL_RGBA, type,
                type == GL_FLOAT ? data : nullptr);
   PT_GL_CHECK("glTexImage2D");  // GL_OUT_OF_MEMORY, or a size over the limit

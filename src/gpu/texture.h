@@ -9,7 +9,8 @@ namespace pt {
 class Texture {
  public:
   Texture() = default;
-  // RGBA float texture, nearest filtering; `data` may be null.
+  // RGBA float texture, nearest filtering; `data` may be null: then the storage is
+  // immutable (glTexStorage2D), so a compute kernel can bind it as an image.
   Texture(int w, int h, GLenum internal_format, const float* data);
   ~Texture() { reset(); }
   Texture(Texture&& o) noexcept : id_(std::exchange(o.id_, 0u)), w_(o.w_), h_(o.h_) {}

@@ -103,8 +103,12 @@ HeadlessGl::HeadlessGl() {
     if (!eglChooseConfig(dpy, any, &cfg, 1, &count) || count == 0)
       throw std::runtime_error("EGL: no OpenGL ES 3 configuration");
   }
-  const EGLint ctx_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0, EGL_NONE};
-  EGLContext ctx = eglCreateContext(dpy, cfg, EGL_NO_CONTEXT, ctx_attribs);
+  // The newest of 3.2, 3.1, 3.0: from 3.1 the renderer can run its compute kernel.
+  EGLContext ctx = EGL_NO_CONTEXT;
+  for (EGLint minor = 2; minor >= 0 && ctx == EGL_NO_CONTEXT; --minor) {
+    const EGLint ctx_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, minor, EGL_NONE};
+    ctx = eglCreateContext(dpy, cfg, EGL_NO_CONTEXT, ctx_attribs);
+  }
   if (ctx == EGL_NO_CONTEXT) throw std::runtime_error("EGL: cannot create an OpenGL ES 3.0 context");
   context_ = ctx;
   if (!eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx))

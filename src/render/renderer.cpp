@@ -38,6 +38,12 @@ Renderer::Renderer() : limits_(GlLimits::query()) {
     if (f.complete()) {
       accum_format_ = fmt;
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
+#ifndef __EMSCRIPTEN__
+      GLint major = 0, minor = 0;
+      glGetIntegerv(GL_MAJOR_VERSION, &major);
+      glGetIntegerv(GL_MINOR_VERSION, &minor);
+      compute_supported_ = (major > 3 || (major == 3 && minor >= 1)) && fmt == GL_RGBA32F;
+#endif
       resize(1, 1);
       return;
     }
@@ -57,7 +63,11 @@ bool Renderer::program_ready_for(const Features& f) {
   if (!slot) {
     auto c = std::make_unique<CachedProgram>();
     c->source = generate_integrator(f);
-    c->program = Program::start(fullscreen_vertex(), c->source);
+#ifndef __EMSCRIPTEN__
+    if (f.compute) c->program = Program::start_compute(c->source);
+    else
+#endif
+      c->program = Program::start(fullscreen_vertex(), c->source);
     slot = std::move(c);
   }
   return slot->program.completed();
@@ -66,12 +76,14 @@ bool Renderer::program_ready_for(const Features& f) {
 bool Renderer::program_ready(const Scene& scene) {
   Features f = Features::of(scene);
   f.mode = settings_.mode;
+  f.compute = using_compute();
   return program_ready_for(f);
 }
 
 void Renderer::select_program() {
   Features f = features_;
   f.mode = settings_.mode;
+  f.compute = using_compute();
   program_ready_for(f);
   auto& slot = cache_[f.key()];
   try {
@@ -171,7 +183,7 @@ void Renderer::set_settings(const RenderSettings& s) {
   a.spp_per_pass = b.spp_per_pass;
   a.band_rows = b.band_rows;
   if (!(a == b)) restart();
-  const bool new_mode = s.mode != settings_.mode;
+  const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute;
   settings_ = s;
   if (new_mode && have_scene_) {
     select_program();
@@ -272,19 +284,33 @@ int Renderer::step() {
   node_tex_.bind(kNodeUnit);
   prim_tex_.bind(kPrimUnit);
   vertex_tex_.bind(kVertexUnit);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_[1 - cur_].id());
-  glViewport(0, 0, width_, height_);  // full size: gl_FragCoord stays in image pixels
-  glDisable(GL_BLEND);
-  glDisable(GL_DEPTH_TEST);
-  if (whole) {
-    glDisable(GL_SCISSOR_TEST);
+  if (using_compute()) {
+#ifndef __EMSCRIPTEN__
+    glBindImageTexture(0, accum_[1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, stats_[1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    p.set("u_origin", glm::ivec2(0, y0));
+    p.set("u_row_end", y1);
+    glDispatchCompute(GLuint((width_ + 7) / 8), GLuint((y1 - y0 + 7) / 8), 1);
+    PT_GL_CHECK("glDispatchCompute (integrator)");
+    // What reads the images next: texelFetch (the next pass), blits and glReadPixels.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT);
+#endif
   } else {
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(0, y0, width_, y1 - y0);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_[1 - cur_].id());
+    glViewport(0, 0, width_, height_);  // full size: gl_FragCoord stays in image pixels
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    if (whole) {
+      glDisable(GL_SCISSOR_TEST);
+    } else {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(0, y0, width_, y1 - y0);
+    }
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    PT_GL_CHECK("glDrawArrays (integrator)");
   }
-  glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  PT_GL_CHECK("glDrawArrays (integrator)");
   if (whole) {
     cur_ = 1 - cur_;
   } else {

@@ -26,6 +26,7 @@ struct RenderSettings {
   bool nee = true;       // next-event estimation with MIS (off: BSDF sampling only)
   RenderMode mode = RenderMode::PathTracer;  // a different program per mode
   int sampler = 3;       // 4D blocks of a path drawn from Owen-scrambled Sobol (0: all independent)
+  bool compute = false;  // the compute kernel where the context has one (compute_supported())
   ToneMap tonemap = ToneMap::Aces;
   float exposure = 1.0f;
   bool operator==(const RenderSettings&) const = default;
@@ -70,6 +71,11 @@ class Renderer {
   const RenderSettings& settings() const { return settings_; }
   const Camera& camera() const { return camera_; }
   GLenum accum_format() const { return accum_format_; }
+  // A GL ES 3.1+ context (natively; never WebGL 2) with float images: settings.compute
+  // then runs the integrator as a compute kernel over 8x8 pixel groups instead of a
+  // fragment pass. Same code, same estimate (tests/compute_kernel_test.cpp).
+  bool compute_supported() const { return compute_supported_; }
+  bool using_compute() const { return settings_.compute && compute_supported_; }
   const ShaderSource& integrator_source() const { return *source_; }
   double compile_ms() const { return integrator_ ? integrator_->compile_ms() : 0.0; }
   size_t programs_compiled() const { return cache_.size(); }
@@ -124,6 +130,7 @@ class Renderer {
   Texture stats_[2];
   Framebuffer fbo_[2];
   GLenum accum_format_ = GL_RGBA32F;
+  bool compute_supported_ = false;
   GLuint vao_ = 0;
   int cur_ = 0;
   int samples_ = 0;

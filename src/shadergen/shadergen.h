@@ -18,16 +18,20 @@ struct Features {
   bool env_map = false;    // an HDR environment map (importance-sampled)
   bool motion = false;     // a sphere moves (velocity): intersection depends on time
   RenderMode mode = RenderMode::PathTracer;  // a render setting, not the scene's: the renderer sets it
+  // A GLSL ES 3.10 compute kernel instead of the WebGL 2 fragment pass (native GL ES 3.1+
+  // only; the same code, run on every core: some GPUs, the H100 among them, give
+  // fragment shaders a small part of their cores). A renderer setting too.
+  bool compute = false;
   bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
   bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
   bool has_light(ShapeKind k) const { return lights >> int(k) & 1u; }
   uint64_t key() const {
-    return uint64_t(shapes) | uint64_t(lights) << 16 | uint64_t(materials) << 32 | uint64_t(motion) << 62 |
-           uint64_t(env_map) << 63 | uint64_t(mode) << 56;  // materials use bits 32..55
+    return uint64_t(shapes) | uint64_t(compute) << 15 | uint64_t(lights) << 16 | uint64_t(materials) << 32 |
+           uint64_t(motion) << 62 | uint64_t(env_map) << 63 | uint64_t(mode) << 56;  // materials use bits 32..55
   }
   static Features of(const Scene& scene);
 };
-static_assert(kNumShapeKinds <= 16 && kNumMaterialKinds <= 24 && kNumRenderModes <= 64, "Features::key bits");
+static_assert(kNumShapeKinds <= 15 && kNumMaterialKinds <= 24 && kNumRenderModes <= 64, "Features::key bits");
 
 // A program's text after include resolution, and the files that its "#line L S"
 // directives number S (0 is the generated text), so logs can name the snippet file.
