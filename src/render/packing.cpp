@@ -6,6 +6,7 @@
 #include "render/image_maps.h"
 
 #include "core/error.h"
+#include "shapes/triangle.h"
 
 namespace pt {
 namespace {
@@ -198,6 +199,7 @@ PackedScene pack_scene(const Scene& scene) {
         attr = glm::vec3(tri) + float(vertex_base[size_t(ref.shape)]);
     }
     p.prims.set(k, prim_rec::tag, ref.shape);
+    p.prims.set(k, prim_rec::kind, triangle_edge_order(v[0], v[1], v[2]));
     p.prims.set(k, prim_rec::v0, v[0]);
     p.prims.set(k, prim_rec::v1, v[1]);
     p.prims.set(k, prim_rec::v2, v[2]);

@@ -45,8 +45,8 @@
 #define PT_NODE_RECORD(F) PT_NODE_CHILD(F, 0) PT_NODE_CHILD(F, 1) PT_NODE_CHILD(F, 2) PT_NODE_CHILD(F, 3)
 
 // A primitive of the BVH, in leaf order. tag >= 0: a triangle of shape `tag` (vertices
-// in world space; attr = the indices of its vertices in the vertex-attribute records, or
-// -1 when the mesh has none); tag < 0: the analytic shape -1 - tag (sphere, box, or an
+// in world space; kind = its edge-order bits, shapes/triangle.h; attr = the indices of its
+// vertices in the vertex-attribute records, or -1 when the mesh has none); tag < 0: the analytic shape -1 - tag (sphere, box, or an
 // unbounded plane) with a copy of the geometry its intersection reads (kind, a, b,
 // radius of its shape record), so the traversal never fetches the shape record.
 #define PT_PRIM_RECORD(F) \

@@ -15,8 +15,16 @@ bool vertex_before(vec3 p, vec3 q) {
   return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && p.z < q.z)));
 }
 
-float edge_function(vec3 p, vec3 q, vec2 ps, vec2 qs) {
-  return vertex_before(p, q) ? ps.x * qs.y - ps.y * qs.x : -(qs.x * ps.y - qs.y * ps.x);
+// The edge function of (p, q) from the 2D points; `before`: vertex_before(p, q).
+float edge_function(bool before, vec2 ps, vec2 qs) {
+  return before ? ps.x * qs.y - ps.y * qs.x : -(qs.x * ps.y - qs.y * ps.x);
+}
+
+// Bits 0, 1, 2: whether the edges (c, b), (a, c), (b, a) run in canonical order. The
+// BVH's triangle primitives carry them (packed once: shapes/triangle.h), so the
+// traversal's tests make no vertex comparisons.
+int triangle_edge_order(vec3 va, vec3 vb, vec3 vc) {
+  return (vertex_before(vc, vb) ? 1 : 0) | (vertex_before(va, vc) ? 2 : 0) | (vertex_before(vb, va) ? 4 : 0);
 }
 
 // Per ray, once: the permutation and shear as three rows (so no vector is indexed by a
@@ -38,14 +46,14 @@ TriangleRay prepare_triangle(Ray r) {
   return TriangleRay(ex - dot(r.d, ex) * sz * ez, ey - dot(r.d, ey) * sz * ez, sz * ez);
 }
 
-void intersect_triangle_verts(vec3 va, vec3 vb, vec3 vc, int id, Ray r, TriangleRay tr, inout Hit h) {
+void intersect_triangle_verts(vec3 va, vec3 vb, vec3 vc, int order, int id, Ray r, TriangleRay tr, inout Hit h) {
   vec3 a = va - r.o, b = vb - r.o, c = vc - r.o;
   vec2 a2 = vec2(dot(tr.x, a), dot(tr.y, a));
   vec2 b2 = vec2(dot(tr.x, b), dot(tr.y, b));
   vec2 c2 = vec2(dot(tr.x, c), dot(tr.y, c));
-  float u = edge_function(vc, vb, c2, b2);  // cx * by - cy * bx
-  float v = edge_function(va, vc, a2, c2);  // ax * cy - ay * cx
-  float w = edge_function(vb, va, b2, a2);  // bx * ay - by * ax
+  float u = edge_function((order & 1) != 0, c2, b2);  // cx * by - cy * bx
+  float v = edge_function((order & 2) != 0, a2, c2);  // ax * cy - ay * cx
+  float w = edge_function((order & 4) != 0, b2, a2);  // bx * ay - by * ax
   if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return;
   float det = u + v + w;
   if (det == 0.0) return;
@@ -57,11 +65,13 @@ void intersect_triangle_verts(vec3 va, vec3 vb, vec3 vc, int id, Ray r, Triangle
   h.p = (u * va + v * vb + w * vc) / det;  // barycentric: on the triangle's plane by construction
 }
 
-// A triangle primitive of the BVH (a lone Triangle or a mesh's): vertices inline.
-void triangle_prim(PrimRec p, Ray r, TriangleRay tr, inout Hit h) { intersect_triangle_verts(p.v0, p.v1, p.v2, p.tag, r, tr, h); }
+// A triangle primitive of the BVH (a lone Triangle or a mesh's): vertices and edge order inline.
+void triangle_prim(PrimRec p, Ray r, TriangleRay tr, inout Hit h) {
+  intersect_triangle_verts(p.v0, p.v1, p.v2, p.kind, p.tag, r, tr, h);
+}
 
 void intersect_triangle(ShapeRec s, int id, Ray r, TriangleRay tr, inout Hit h) {
-  intersect_triangle_verts(s.a, s.b, s.c, id, r, tr, h);
+  intersect_triangle_verts(s.a, s.b, s.c, triangle_edge_order(s.a, s.b, s.c), id, r, tr, h);
 }
 
 #ifdef HAS_LIGHT_TRIANGLE

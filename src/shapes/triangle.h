@@ -10,6 +10,12 @@ inline bool vertex_before(glm::vec3 p, glm::vec3 q) {
   return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && p.z < q.z)));
 }
 
+// Which of the edges (c, b), (a, c), (b, a) run in canonical order (bits 0, 1, 2): the
+// BVH's triangle primitives carry them, computed once when packing (triangle.glsl).
+inline int triangle_edge_order(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+  return (vertex_before(c, b) ? 1 : 0) | (vertex_before(a, c) ? 2 : 0) | (vertex_before(b, a) ? 4 : 0);
+}
+
 inline float edge_function(glm::vec3 p, glm::vec3 q, glm::vec2 ps, glm::vec2 qs) {
   return vertex_before(p, q) ? ps.x * qs.y - ps.y * qs.x : -(qs.x * ps.y - qs.y * ps.x);
 }
