@@ -1,11 +1,10 @@
-// bvh.glsl: ray traversal of the scene's 4-wide BVH (accel/bvh_wide.h, packed by
-// render/packing.cpp). At an interior node the four children's boxes are fetched and
-// tested together, sorted by entry distance; the nearest is visited next and the others
-// pushed on a small stack, nearest last (Aila and Laine 2009 order, without the
-// persistent threads). Primitives are stored in leaf order; planes, having no bounds, sit
-// before them and every ray tests them. The same loop answers nearest-hit queries and
-// shadow queries (any hit before tmax ends it), which the compiler specialises since
-// `any_hit` is constant at each call.
+// bvh.glsl: ray traversal of the scene's BVH (accel/bvh.h, packed by render/packing.cpp).
+// Binary nodes with adjacent children: at an interior node both children's boxes are
+// fetched and tested together, the nearer is visited next and the farther pushed on a
+// small stack (Aila and Laine 2009, without the persistent threads). Primitives are
+// stored in leaf order; planes, having no bounds, sit before them and every ray tests
+// them. The same loop answers nearest-hit queries and shadow queries (any hit before
+// tmax ends it), which the compiler specialises since `any_hit` is constant at each call.
 uniform int u_num_unbounded;  // prims [0, n) are outside the hierarchy
 uniform int u_num_nodes;      // 0: no bounded primitive
 
@@ -23,26 +22,9 @@ float bvh_box_entry(vec3 lo, vec3 hi, vec3 o, vec3 inv, float tmax) {
   return tn <= tf && tn <= tmax ? tn : T_INF;
 }
 
-// A stack entry: an interior child as its node index (>= 0), a leaf as
+// A stack entry: an interior node as the index of its first child (>= 0), a leaf as
 // -1 - (first primitive * 16 + count - 1) (leaves hold 1..16 primitives).
-int bvh_entry(int first, int count) { return count == 0 ? first : -1 - (first * 16 + count - 1); }
-
-// Entry distance of child slot (lo, hi, count): T_INF for an empty slot (count < 0).
-float bvh_child_entry(vec3 lo, vec3 hi, int count, vec3 o, vec3 inv, float tmax) {
-  return count < 0 ? T_INF : bvh_box_entry(lo, hi, o, inv, tmax);
-}
-
-// One compare-exchange of the sorting network over (distance, entry) pairs.
-void bvh_order(inout float ta, inout int ea, inout float tb, inout int eb) {
-  if (tb < ta) {
-    float t = ta;
-    ta = tb;
-    tb = t;
-    int e = ea;
-    ea = eb;
-    eb = e;
-  }
-}
+int bvh_entry(NodeRec n) { return n.count == 0 ? n.first : -1 - (n.first * 16 + n.count - 1); }
 
 void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
   PrimRec p = load_prim(i);
@@ -57,7 +39,7 @@ void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
   if (h.t < before) h.prim = i;
 }
 
-const int BVH_STACK_SIZE = 64;  // = kBvhStackSize: the builder bounds the depth by it
+const int BVH_STACK_SIZE = 48;  // = kBvhStackSize: the builder bounds the depth by it
 
 // Nearest hit closer than tmax (any_hit: the first found), ignoring shape `skip`.
 Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
@@ -68,29 +50,27 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
   for (int i = 0; i < u_num_unbounded; ++i) bvh_prim(i, r, pre, skip, h);
   if ((any_hit && h.id >= 0) || u_num_nodes == 0) return h;
   vec3 inv = 1.0 / mix(r.d, vec3(1e-30), equal(r.d, vec3(0.0)));
+  NodeRec root = load_node(0);
+  if (bvh_box_entry(root.lo, root.hi, r.o, inv, h.t) == T_INF) return h;
   int stack[BVH_STACK_SIZE];
   int sp = 0;
-  int cur = 0;  // the root
+  int cur = bvh_entry(root);
   for (;;) {
     if (cur >= 0) {
-      NodeRec n = load_node(cur);
-      float t0 = bvh_child_entry(n.lo0, n.hi0, n.count0, r.o, inv, h.t);
-      float t1 = bvh_child_entry(n.lo1, n.hi1, n.count1, r.o, inv, h.t);
-      float t2 = bvh_child_entry(n.lo2, n.hi2, n.count2, r.o, inv, h.t);
-      float t3 = bvh_child_entry(n.lo3, n.hi3, n.count3, r.o, inv, h.t);
-      int e0 = bvh_entry(n.first0, n.count0), e1 = bvh_entry(n.first1, n.count1);
-      int e2 = bvh_entry(n.first2, n.count2), e3 = bvh_entry(n.first3, n.count3);
-      // Sorting network for four: nearest in slot 0.
-      bvh_order(t0, e0, t1, e1);
-      bvh_order(t2, e2, t3, e3);
-      bvh_order(t0, e0, t2, e2);
-      bvh_order(t1, e1, t3, e3);
-      bvh_order(t1, e1, t2, e2);
-      if (t0 < T_INF) {
-        if (t3 < T_INF) stack[sp++] = e3;
-        if (t2 < T_INF) stack[sp++] = e2;
-        if (t1 < T_INF) stack[sp++] = e1;
-        cur = e0;
+      NodeRec a = load_node(cur);
+      NodeRec b = load_node(cur + 1);
+      float ta = bvh_box_entry(a.lo, a.hi, r.o, inv, h.t);
+      float tb = bvh_box_entry(b.lo, b.hi, r.o, inv, h.t);
+      // (Entries, not records, in the selections: WebGL has no ?: on structures.)
+      int ea = bvh_entry(a), eb = bvh_entry(b);
+      if (ta < T_INF && tb < T_INF) {
+        bool a_first = ta <= tb;
+        stack[sp++] = a_first ? eb : ea;
+        cur = a_first ? ea : eb;
+        continue;
+      }
+      if (ta < T_INF || tb < T_INF) {
+        cur = ta < T_INF ? ea : eb;
         continue;
       }
     } else {

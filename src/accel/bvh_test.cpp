@@ -8,7 +8,6 @@
 #include <catch2/catch.hpp>
 
 #include "accel/bvh.h"
-#include "accel/bvh_wide.h"
 
 using namespace pt;
 
@@ -108,81 +107,6 @@ TEST_CASE("BVH: degenerate inputs (one primitive, coincident centroids, a geomet
   const Bvh bc = build_bvh(chain, o);
   check_structure(bc, chain, o);
   std::printf("geometric chain of 1000 boxes: depth %d (bound %d)\n", bc.depth, o.max_depth);
-}
-
-namespace {
-
-// The collapse keeps every leaf of the binary tree exactly once with its box, gives each
-// wide node 2 to 4 children (empty slots last), and its stack bound holds: replaying a
-// worst-case traversal (every child hit, all pushed) never holds more than stack_need,
-// which is within 3 * floor(D / 2).
-void check_wide(const Bvh& b) {
-  const WideBvh w = collapse_to_wide(b);
-  if (b.nodes.empty()) {
-    CHECK(w.nodes.empty());
-    return;
-  }
-  std::vector<int> leaves_binary, leaves_wide;
-  for (const BvhNode& n : b.nodes)
-    if (n.count > 0) leaves_binary.push_back(n.first * 16 + n.count - 1);
-  int boxes_differ = 0, bad_arity = 0, worst_stack = 0;
-  struct Visit { int node, held; };
-  std::vector<Visit> todo{{0, 0}};
-  while (!todo.empty()) {
-    const Visit v = todo.back();
-    todo.pop_back();
-    const WideNode& n = w.nodes[size_t(v.node)];
-    int k = 0;
-    while (k < 4 && n.child[size_t(k)].count >= 0) ++k;
-    for (int i = k; i < 4; ++i) bad_arity += n.child[size_t(i)].count >= 0;  // empty slots last
-    if (k < (w.nodes.size() == 1 && b.nodes.size() == 1 ? 1 : 2)) ++bad_arity;
-    worst_stack = std::max(worst_stack, v.held + k - 1);
-    for (int i = 0; i < k; ++i) {
-      const WideChild& c = n.child[size_t(i)];
-      // The child's box must be some binary node's box with the same first/count.
-      bool found = false;
-      for (const BvhNode& bn : b.nodes)
-        if (bn.box.lo == c.box.lo && bn.box.hi == c.box.hi && (c.count > 0 ? bn.count == c.count && bn.first == c.first : bn.count == 0)) {
-          found = true;
-          break;
-        }
-      boxes_differ += !found;
-      if (c.count > 0) leaves_wide.push_back(c.first * 16 + c.count - 1);
-      else todo.push_back({c.first, v.held + k - 1});
-    }
-  }
-  std::sort(leaves_binary.begin(), leaves_binary.end());
-  std::sort(leaves_wide.begin(), leaves_wide.end());
-  CHECK(leaves_wide == leaves_binary);
-  CHECK(boxes_differ == 0);
-  CHECK(bad_arity == 0);
-  CHECK(worst_stack == w.stack_need);
-  CHECK(w.stack_need <= 3 * (b.depth / 2));
-  CHECK(w.depth <= (b.depth + 1) / 2);
-}
-
-}  // namespace
-
-TEST_CASE("4-wide BVH: the collapse keeps every leaf and box, and its stack bound holds", "[bvh]") {
-  check_wide(build_bvh({}));
-  std::vector<Aabb> one(1);
-  one[0].grow(glm::vec3(1.0f));
-  check_wide(build_bvh(one));
-  check_wide(build_bvh(random_boxes(3000, 5)));
-  BvhBuildOptions o;
-  o.max_depth = 20;
-  std::vector<Aabb> chain;  // the deepest kind of tree: one box peeled per level
-  for (int i = 0; i < 1000; ++i) {
-    Aabb b;
-    const float x = std::pow(0.9f, float(i)) * 1e3f;
-    b.grow(glm::vec3(x));
-    b.grow(glm::vec3(x * 1.01f));
-    chain.push_back(b);
-  }
-  const Bvh deep = build_bvh(chain, o);
-  check_wide(deep);
-  std::printf("chain: binary depth %d, 4-wide depth %d, stack need %d\n", deep.depth, collapse_to_wide(deep).depth,
-              collapse_to_wide(deep).stack_need);
 }
 
 TEST_CASE("BVH: build time for one million triangles", "[bvh][speed]") {

@@ -48,8 +48,8 @@ int run_render(const Options& o) {
               scene.materials.size(), scene.lights.size(), load_ms);
   std::printf("mode: %s, %s kernel\n", kRenderModeNames[int(settings.mode)], r.using_compute() ? "compute" : "fragment");
   const Renderer::BvhStats& bs = r.bvh_stats();
-  std::printf("BVH: %d primitives, %d 4-wide nodes, depth %d (binary %d), built in %.0f ms; packed and uploaded in %.0f ms in all\n",
-              bs.primitives, bs.nodes, bs.wide_depth, bs.depth, bs.build_ms, set_ms);
+  std::printf("BVH: %d primitives, %d nodes, depth %d, built in %.0f ms; packed and uploaded in %.0f ms in all\n", bs.primitives,
+              bs.nodes, bs.depth, bs.build_ms, set_ms);
   std::printf("shader: %zu bytes, compiled and linked in %.1f ms\n", r.integrator_source().text.size(), r.compile_ms());
 
   DrawPacer pacer(40.0);

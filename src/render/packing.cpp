@@ -1,7 +1,6 @@
 #include "render/packing.h"
 
 #include <chrono>
-#include <stdexcept>
 
 #include "render/image_maps.h"
 
@@ -171,10 +170,8 @@ PackedScene pack_scene(const Scene& scene) {
 
   const auto t0 = std::chrono::steady_clock::now();
   BvhBuildOptions opt;
-  opt.max_depth = kBvhMaxDepth;
+  opt.max_depth = kBvhStackSize + 1;
   const Bvh bvh = build_bvh(boxes, opt);
-  const WideBvh wide = collapse_to_wide(bvh);
-  if (wide.stack_need > kBvhStackSize) throw std::logic_error("the 4-wide BVH needs a deeper traversal stack than the shader has");
   p.bvh_build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   p.bvh_depth = bvh.depth;
 
@@ -205,22 +202,13 @@ PackedScene pack_scene(const Scene& scene) {
     p.prims.set(k, prim_rec::v2, v[2]);
     p.prims.set(k, prim_rec::attr, attr);
   }
-  p.bvh_wide_depth = wide.depth;
-  p.nodes.reserve(int(wide.nodes.size()));
-  using namespace node_rec;
-  const Field* lo[4] = {&lo0, &lo1, &lo2, &lo3};
-  const Field* hi[4] = {&hi0, &hi1, &hi2, &hi3};
-  const Field* first[4] = {&first0, &first1, &first2, &first3};
-  const Field* count[4] = {&count0, &count1, &count2, &count3};
-  for (const WideNode& n : wide.nodes) {
+  p.nodes.reserve(int(bvh.nodes.size()));
+  for (const BvhNode& n : bvh.nodes) {
     const int k = p.nodes.add();
-    for (size_t i = 0; i < 4; ++i) {
-      const WideChild& c = n.child[i];
-      p.nodes.set(k, *lo[i], c.count >= 0 ? c.box.lo : glm::vec3(0.0f));
-      p.nodes.set(k, *hi[i], c.count >= 0 ? c.box.hi : glm::vec3(0.0f));
-      p.nodes.set(k, *first[i], c.count > 0 ? c.first + p.unbounded : c.first);
-      p.nodes.set(k, *count[i], c.count);
-    }
+    p.nodes.set(k, node_rec::lo, n.box.lo);
+    p.nodes.set(k, node_rec::hi, n.box.hi);
+    p.nodes.set(k, node_rec::first, n.count > 0 ? n.first + p.unbounded : n.first);
+    p.nodes.set(k, node_rec::count, n.count);
   }
   return p;
 }

@@ -2,7 +2,6 @@
 // primitive (accel/bvh.h) and the primitives in its leaf order.
 #pragma once
 #include "accel/bvh.h"
-#include "accel/bvh_wide.h"
 #include "render/records.h"
 #include "scene/scene.h"
 
@@ -16,18 +15,14 @@ struct PackedScene {
   RecordBuffer prims{prim_rec::kTexels};
   RecordBuffer vertices{vertex_rec::kTexels};
   int unbounded = 0;  // prims [0, unbounded) lie outside the BVH (planes): every ray tests them
-  int bvh_depth = 0;       // of the binary hierarchy built
-  int bvh_wide_depth = 0;  // of the 4-wide one packed (accel/bvh_wide.h)
+  int bvh_depth = 0;
   float motion_bound = 0.0f;  // moving spheres are bounded over times [0, motion_bound]
   double bvh_build_ms = 0.0;
 };
 
-// The traversal's stack (bvh.glsl: BVH_STACK_SIZE). The 4-wide walk holds at most
-// 3 * floor(D / 2) entries for a binary depth D (accel/bvh_wide.h), so the binary build is
-// bounded at kBvhMaxDepth: below it, object-median splits take over (build_bvh's max_depth).
-inline constexpr int kBvhStackSize = 64;
-inline constexpr int kBvhMaxDepth = 42;
-static_assert(3 * (kBvhMaxDepth / 2) <= kBvhStackSize, "the deepest hierarchy must fit the traversal stack");
+// The traversal's stack holds at most depth - 1 entries: hierarchies deeper than this are
+// rebuilt with median splits below that depth (see build_bvh's max_depth).
+inline constexpr int kBvhStackSize = 48;
 
 PackedScene pack_scene(const Scene& scene);
 

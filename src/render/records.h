@@ -36,13 +36,11 @@
 #define PT_UV_RECORD(F) \
   F(vec2, uv0, 0, 0) F(vec2, uv1, 0, 2) F(vec2, uv2, 1, 0)
 
-// 4-wide BVH node (accel/bvh_wide.h): for each of its four child slots, the child's box
-// and: interior: first = its node, count = 0; leaf: first = its first primitive, count =
-// how many (1..16); empty slot: count = -1.
-#define PT_NODE_CHILD(F, i) \
-  F(vec3, lo##i, 2 * i, 0) F(int, first##i, 2 * i, 3) \
-  F(vec3, hi##i, 2 * i + 1, 0) F(int, count##i, 2 * i + 1, 3)
-#define PT_NODE_RECORD(F) PT_NODE_CHILD(F, 0) PT_NODE_CHILD(F, 1) PT_NODE_CHILD(F, 2) PT_NODE_CHILD(F, 3)
+// BVH node (accel/bvh.h): bounds; interior: first = index of the first of its two
+// adjacent children, count = 0; leaf: first = its first primitive, count = how many.
+#define PT_NODE_RECORD(F) \
+  F(vec3, lo, 0, 0) F(int, first, 0, 3) \
+  F(vec3, hi, 1, 0) F(int, count, 1, 3)
 
 // A primitive of the BVH, in leaf order. tag >= 0: a triangle of shape `tag` (vertices
 // in world space; kind = its edge-order bits, shapes/triangle.h; attr = the indices of its
@@ -97,7 +95,7 @@ struct RecordLayout {
   X(shape, 4, PT_SHAPE_RECORD)        \
   X(material, 4, PT_MATERIAL_RECORD)  \
   X(light, 1, PT_LIGHT_RECORD)        \
-  X(node, 8, PT_NODE_RECORD)          \
+  X(node, 2, PT_NODE_RECORD)          \
   X(prim, 4, PT_PRIM_RECORD)          \
   X(vertex, 2, PT_VERTEX_RECORD)      \
   X(uv, 2, PT_UV_RECORD)

@@ -149,7 +149,7 @@ void Renderer::set_scene(const Scene& scene) {
   num_unbounded_ = p.unbounded;
   num_nodes_ = p.nodes.count();
   motion_bound_ = p.motion_bound;
-  bvh_stats_ = {p.prims.count() - p.unbounded, p.nodes.count(), p.bvh_depth, p.bvh_wide_depth, p.bvh_build_ms};
+  bvh_stats_ = {p.prims.count() - p.unbounded, p.nodes.count(), p.bvh_depth, p.bvh_build_ms};
   dot_weight_ = scene.dot_weight;
   env_color_ = scene.environment.color;
   const Environment& env = scene.environment;

@@ -81,7 +81,7 @@ class Renderer {
   size_t programs_compiled() const { return cache_.size(); }
   // The acceleration structure of the current scene.
   struct BvhStats {
-    int primitives = 0, nodes = 0, depth = 0, wide_depth = 0;  // nodes: 4-wide; depth: of the binary build
+    int primitives = 0, nodes = 0, depth = 0;
     double build_ms = 0.0;
   };
   const BvhStats& bvh_stats() const { return bvh_stats_; }
