@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh or kernels}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels or variants}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -30,6 +30,20 @@ curves() {  # scene name ref-args...
   done
   $B plot "$w/$name-time.svg" --title "$name $S: relMSE against time" "$w/$name"-*.csv
   $B plot "$w/$name-spp.svg" --x spp --title "$name $S: relMSE against samples per pixel" "$w/$name"-*.csv
+}
+# A scene of n spheres and boxes in a 100-wide grid (the shader must not grow with n).
+objects_scene() {
+  local n=$1 f=$2
+  {
+    echo '<SceneLevel><Camera position="50 50 -150" up="0 1 0" yaw="270" pitch="0"/>'
+    echo '<Light position="50 200 -100" radius="10" color="1 1 1" intensity="50"/><Objects>'
+    for ((i = 0; i < n; ++i)); do
+      x=$((i % 100)) y=$((i / 100))
+      if ((i % 2)); then echo "<Sphere center=\"$x $y 0\" radius=\"0.4\"><Diffuse/></Sphere>"
+      else echo "<Box min=\"$x $y 0\" max=\"$x.5 $y.5 0.5\"><Diffuse/></Box>"; fi
+    done
+    echo '</Objects></SceneLevel>'
+  } > "$f"
 }
 case "$part" in
   cornell)
@@ -59,16 +73,7 @@ case "$part" in
     $B render scenes/gltf-instances.xml --size $S --spp 64 --out "$w/gltf-1080p.png"
     for n in 10 10000; do
       f="$w/objects-$n.xml"
-      {
-        echo '<SceneLevel><Camera position="50 50 -150" up="0 1 0" yaw="270" pitch="0"/>'
-        echo '<Light position="50 200 -100" radius="10" color="1 1 1" intensity="50"/><Objects>'
-        for ((i = 0; i < n; ++i)); do
-          x=$((i % 100)) y=$((i / 100))
-          if ((i % 2)); then echo "<Sphere center=\"$x $y 0\" radius=\"0.4\"><Diffuse/></Sphere>"
-          else echo "<Box min=\"$x $y 0\" max=\"$x.5 $y.5 0.5\"><Diffuse/></Box>"; fi
-        done
-        echo '</Objects></SceneLevel>'
-      } > "$f"
+      objects_scene $n "$f"
       $B render "$f" --size $S --spp 64 --out "$w/objects-$n.png"
     done
     ;;
@@ -87,6 +92,28 @@ case "$part" in
       else echo "$n: 16 spp DIFFER: $(cmp "$w/$n-fragment-16.pfm" "$w/$n-compute-16.pfm" | head -1)"; fi
     done
     $B render scenes/bench/million.xml --size $S --spp 100000 --seconds 8 --bounces 1 --kernel compute --out "$w/million-1bounce.png"
+    ;;
+  variants)
+    # Builds of different commits side by side (build/bench/pt-NAME, carried): the same
+    # scenes, compute kernel, 1080p, 5 s each; then 16 spp of each compared byte for byte
+    # with the first variant's (a traversal change must not change the image).
+    objects_scene 10000 "$w/objects-10000.xml"
+    for v in build/bench/pt-*; do
+      for s in scenes/bench/million.xml scenes/gltf-instances.xml scenes/reference/scene0.xml "$w/objects-10000.xml"; do
+        n=$(basename "$s" .xml)
+        echo "== $(basename "$v") $n"
+        $v render "$s" --size $S --spp 100000 --seconds 5 --out "$w/$n.png" | grep -E "BVH|rendered"
+        $v render "$s" --size 640x360 --spp 16 --spp-per-pass 4 --out "$w/$n-$(basename "$v")-16.pfm" > /dev/null
+      done
+    done
+    first=$(ls build/bench/ | head -1)
+    for f in "$w"/*-16.pfm; do cmp -s "$f" "${f%-pt-*-16.pfm}-$first-16.pfm" && echo "$(basename "$f"): identical to $first" || echo "$(basename "$f"): differs from $first"; done
+    rm -f "$w"/*.png
+    last=$(ls build/bench/pt-* | tail -1)
+    for flags in "--sampler independent" "--no-nee" "--bounces 1" "--kernel fragment"; do
+      echo "== $(basename "$last") million $flags"
+      $last render scenes/bench/million.xml --size $S --spp 100000 --seconds 5 $flags --out /tmp/m.png | grep -E "rendered"
+    done
     ;;
 esac
 rm -f "$w"/*.pfm
