@@ -43,16 +43,22 @@ uint laine_karras(uint x, uint seed) {
 
 uint nested_uniform_scramble(uint x, uint seed) { return reverse_bits(laine_karras(reverse_bits(x), seed)); }
 
-uint sobol(uint index, int dim) {
-  uint x = 0u;
-  for (int bit = 0; index != 0u; ++bit, index >>= 1u)
-    if ((index & 1u) != 0u) x ^= SOBOL_DIRECTIONS[dim * 32 + bit];
-  return x;
+// Point `index` of the 4D Sobol sequence: dimension 0 is van der Corput (the bits
+// reversed); 1..3 in one loop of a fixed count without branches, which compilers unroll
+// so the direction numbers become immediates (the scrambled index has all 32 bits set at
+// random: an early exit saves nothing). tests/sobol_test.cpp: equal to sobol_sample.
+uvec4 sobol4(uint index) {
+  uvec3 x = uvec3(0u);
+  for (int bit = 0; bit < 32; ++bit) {
+    uint mask = 0u - ((index >> uint(bit)) & 1u);
+    x ^= mask & uvec3(SOBOL_DIRECTIONS[32 + bit], SOBOL_DIRECTIONS[64 + bit], SOBOL_DIRECTIONS[96 + bit]);
+  }
+  return uvec4(reverse_bits(index), x);
 }
 
 vec4 owen_sobol4(uint index, uint seed) {
   uint i = nested_uniform_scramble(index, seed);
-  uvec4 v = uvec4(sobol(i, 0), sobol(i, 1), sobol(i, 2), sobol(i, 3));
+  uvec4 v = sobol4(i);
   v = uvec4(nested_uniform_scramble(v.x, pcg_hash(seed ^ 0xa511e9b3u)), nested_uniform_scramble(v.y, pcg_hash(seed ^ 0x63d83595u)),
             nested_uniform_scramble(v.z, pcg_hash(seed ^ 0x7feb352du)), nested_uniform_scramble(v.w, pcg_hash(seed ^ 0x846ca68bu)));
   return vec4(v >> 8u) * (1.0 / 16777216.0);
