@@ -41,6 +41,21 @@ void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
 
 const int BVH_STACK_SIZE = 48;  // = kBvhStackSize: the builder bounds the depth by it
 
+#ifdef PT_COMPUTE
+// The compute kernel keeps the stacks in shared memory, interleaved (entry k of
+// invocation j at k * PT_GROUP_SIZE + j: a warp's accesses at one depth fall in distinct
+// banks); a local array lives in cached device memory. One stack per invocation is
+// enough: traversals never nest.
+shared int s_bvh_stack[BVH_STACK_SIZE * PT_GROUP_SIZE];
+#define BVH_STACK_DECL
+#define BVH_PUSH(e) s_bvh_stack[(sp++) * PT_GROUP_SIZE + int(gl_LocalInvocationIndex)] = (e)
+#define BVH_POP() s_bvh_stack[(--sp) * PT_GROUP_SIZE + int(gl_LocalInvocationIndex)]
+#else
+#define BVH_STACK_DECL int stack[BVH_STACK_SIZE];
+#define BVH_PUSH(e) stack[sp++] = (e)
+#define BVH_POP() stack[--sp]
+#endif
+
 // Nearest hit closer than tmax (any_hit: the first found), ignoring shape `skip`.
 Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
   ++g_rays;
@@ -52,7 +67,7 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
   vec3 inv = 1.0 / mix(r.d, vec3(1e-30), equal(r.d, vec3(0.0)));
   NodeRec root = load_node(0);
   if (bvh_box_entry(root.lo, root.hi, r.o, inv, h.t) == T_INF) return h;
-  int stack[BVH_STACK_SIZE];
+  BVH_STACK_DECL
   int sp = 0;
   int cur = bvh_entry(root);
   for (;;) {
@@ -65,7 +80,7 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
       int ea = bvh_entry(a), eb = bvh_entry(b);
       if (ta < T_INF && tb < T_INF) {
         bool a_first = ta <= tb;
-        stack[sp++] = a_first ? eb : ea;
+        BVH_PUSH(a_first ? eb : ea);
         cur = a_first ? ea : eb;
         continue;
       }
@@ -81,7 +96,7 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
       if (any_hit && h.id >= 0) return h;
     }
     if (sp == 0) break;
-    cur = stack[--sp];
+    cur = BVH_POP();
   }
   return h;
 }

@@ -25,7 +25,6 @@ uniform vec3 u_env_color;
 // compute kernel (PT_COMPUTE: native GL ES 3.1+) to the same textures as images, over
 // 8x8-pixel groups covering the rows [u_origin.y, u_row_end) of the band.
 #ifdef PT_COMPUTE
-layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) writeonly uniform highp image2D o_accum_image;
 layout(rgba32f, binding = 1) writeonly uniform highp image2D o_stats_image;
 uniform ivec2 u_origin;
