@@ -16,7 +16,7 @@ mkdir -p "$w"
 exec > >(tee "$w/log-$part.txt") 2>&1
 nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv,noheader || true
 date -u
-B=build/native/pathtracer
+B="${PT_BIN:-build/native/pathtracer}"  # PT_BIN: another carried build
 S=1920x1080
 SAMPLERS="sobol independent"
 curves() {  # scene name ref-args...
@@ -47,8 +47,8 @@ objects_scene() {
 }
 case "$part" in
   cornell)
-    SAMPLERS="sobol sobol-all independent"
-    $B render scenes/cornell-box.xml --size $S --spp 1000000 --seconds 150 --out "$w/cornell-ref.pfm" --out "$w/cornell-ref.png"
+    SAMPLERS="${CORNELL_SAMPLERS:-sobol sobol-all independent}"
+    $B render scenes/cornell-box.xml --size $S --spp 1000000 --seconds "${REF_SECS:-150}" --out "$w/cornell-ref.pfm" --out "$w/cornell-ref.png"
     curves scenes/cornell-box.xml cornell --reference "$w/cornell-ref.pfm"
     ;;
   scenes)
