@@ -1,10 +1,16 @@
-// The format documentation cannot drift: every ```xml block of docs/scene-format.md is
+// The documentation cannot drift. The format page: every ```xml block of docs/scene-format.md is
 // a scene that must load (paths in it are relative to docs/).
 #include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 #include "core/error.h"
 #include "core/file_io.h"
 #include "scene/xml_loader.h"
+#include "shadergen/shadergen.h"
 #include "test_paths.h"
 
 using namespace pt;
@@ -28,4 +34,35 @@ TEST_CASE("every example in docs/scene-format.md loads", "[loader][docs]") {
     at = end + 3;
   }
   CHECK(examples >= 7);  // one per section
+}
+
+// The table of shipped scenes in docs/scenes.md: each scene's kinds and the size of the
+// program generated for it (the page's WebGL 2 path tracer), regenerated here; the page
+// must contain it verbatim (the regenerated table is written to the build folder).
+TEST_CASE("docs/scenes.md lists every shipped scene with its generated shader's size", "[loader][docs][shadergen]") {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(repo_path("scenes")))
+    if (e.path().extension() == ".xml") files.push_back(std::filesystem::relative(e.path(), repo_path("")).generic_string());
+  std::sort(files.begin(), files.end());
+  std::string table = "| scene | shapes | materials | lights sampled | shader (bytes) |\n|---|---|---|---|---|\n";
+  for (const std::string& f : files) {
+    const Scene scene = load_scene_file(repo_path(f));
+    const Features k = Features::of(scene);
+    std::string shapes, materials, lights;
+    for (int i = 0; i < kNumShapeKinds; ++i) {
+      if (k.has(ShapeKind(i))) shapes += std::string(shapes.empty() ? "" : ", ") + kShapeKinds[i].xml;
+      if (k.has_light(ShapeKind(i))) lights += std::string(lights.empty() ? "" : ", ") + kShapeKinds[i].xml;
+    }
+    for (int i = 0; i < kNumMaterialKinds; ++i)
+      if (k.has(MaterialKind(i))) materials += std::string(materials.empty() ? "" : ", ") + kMaterialKinds[i].xml;
+    if (k.env_map) lights += std::string(lights.empty() ? "" : ", ") + "environment map";
+    table += "| `" + f + "` | " + shapes + " | " + materials + " | " + (lights.empty() ? "-" : lights) + " | " +
+             std::to_string(generate_integrator(k).text.size()) + " |\n";
+  }
+  std::ofstream(std::string(PT_BINARY_DIR) + "/scenes-table.md") << table;
+  const auto doc = read_file(repo_path("docs/scenes.md"));
+  REQUIRE(doc);
+  const bool same = doc->find(table) != std::string::npos;
+  if (!same) std::printf("docs/scenes.md: the table differs; the current one is in %s/scenes-table.md\n", PT_BINARY_DIR);
+  CHECK(same);
 }
