@@ -118,3 +118,34 @@ TEST_CASE("motion blur: a moving sphere light over a plane gives the time-averag
   CHECK(std::abs(mean - ex) < 4.0 * se + 1e-4 * ex);
   CHECK(r.counters.bad_samples == 0);
 }
+
+TEST_CASE("field of view: 45 degrees vertically, the seed's; an emitter spans the rows it should", "[gpu][camera]") {
+  test_gl();
+  // An emissive box facing the camera at distance 10, as tall as half the view there
+  // (|y| < 10 tan(22.5 deg) / 2) and wider than the view: exactly the middle half of the
+  // rows must see it. With another field of view the edge moves by whole rows.
+  Scene s;
+  CHECK(s.camera.fov_y == 45.0f);
+  s.camera = camera_looking_down_z(glm::vec3(0.0f));
+  s.environment.color = glm::vec3(0.0f);
+  Material lamp;
+  lamp.kind = MaterialKind::Emit;
+  lamp.emission = glm::vec3(1.0f);
+  const float half = 10.0f * std::tan(glm::radians(22.5f)) * 0.5f;
+  add_box(s, glm::vec3(-100.0f, -half, -11.0f), glm::vec3(100.0f, half, -10.0f), add_material(s, lamp));
+  const int W = 64, H = 64;
+  const RenderResult r = render_scene(s, W, H, 16);
+  int wrong = 0;
+  for (int y = 0; y < H; ++y) {
+    const double lum = r.rgba[(size_t(y) * W + W / 2) * 4 + 1];
+    const bool inside = y >= H / 4 && y < 3 * H / 4;  // rows 16..47 see the emitter
+    const bool edge = y == H / 4 - 1 || y == H / 4 || y == 3 * H / 4 - 1 || y == 3 * H / 4;
+    if (!edge && (inside ? std::abs(lum - 1.0) > 1e-4 : lum > 1e-4)) ++wrong;
+  }
+  // The rows at the edges are cut at their boundary: about half their samples see it.
+  const double below = r.rgba[(size_t(H / 4 - 1) * W + W / 2) * 4 + 1], above = r.rgba[(size_t(H / 4) * W + W / 2) * 4 + 1];
+  std::printf("fov 45: rows outside/inside wrong %d; edge rows %.3f (outside) %.3f (inside)\n", wrong, below, above);
+  CHECK(wrong == 0);
+  CHECK(below < 0.25);
+  CHECK(above > 0.75);
+}

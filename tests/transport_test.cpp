@@ -8,6 +8,8 @@
 #include <memory>
 #include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "gl_context.h"
 #include "glsl_harness.h"
@@ -121,14 +123,26 @@ TEST_CASE("closed room of emitting diffuse walls: Le * sum of rho^k up to the bo
   }
 }
 
-TEST_CASE("sphere light over a white plane: radiance = L (r/D)^2 cos(theta)", "[gpu][transport]") {
+namespace {
+
+struct SphereLight {
+  glm::vec3 center;
+  float radius, L;
+};
+
+// Sphere lights of radiance L fully above a Lambertian plane of albedo 1: each gives
+// irradiance E = pi L (r/D)^2 cos(theta) (like a point source), so the plane's radiance
+// is the sum of L (r/D)^2 cos(theta) over the lights (none shadows another's light on
+// the plane here). One bounce, black environment.
+void check_sphere_lights(const std::vector<SphereLight>& lights, const char* what) {
   test_gl();
-  // A sphere of radiance L fully above a Lambertian plane of albedo 1 gives irradiance
-  // E = pi L (r/D)^2 cos(theta) (like a point source), so the plane's radiance is
-  // L (r/D)^2 cos(theta). One bounce, black environment.
-  const float L = 10.0f, radius = 0.5f;
-  const glm::vec3 center(0.3f, 2.0f, -0.2f);
-  const Scene s = sphere_light_over_plane(center, radius, L);
+  Scene s = sphere_light_over_plane(lights[0].center, lights[0].radius, lights[0].L);
+  for (size_t i = 1; i < lights.size(); ++i) {
+    Material emit;
+    emit.kind = MaterialKind::Emit;
+    emit.emission = glm::vec3(lights[i].L);
+    add_sphere(s, lights[i].center, lights[i].radius, add_material(s, emit));
+  }
   for (bool nee : {true, false}) {
   RenderSettings st;
   st.max_bounces = 1;
@@ -146,17 +160,20 @@ TEST_CASE("sphere light over a white plane: radiance = L (r/D)^2 cos(theta)", "[
         const glm::vec3 d = glm::normalize(cb.forward + ndc.x * cb.right + ndc.y * cb.up);
         const float t = -cb.position.y / d.y;
         const glm::vec3 x = cb.position + t * d;
-        const glm::vec3 to = center - x;
-        const double dist = glm::length(to);
-        // Skip pixels where the light sphere itself is in view.
-        const glm::vec3 oc = cb.position - center;
-        const float bq = glm::dot(oc, d), cq = glm::dot(oc, oc) - radius * radius;
-        if (d.y >= 0 || bq * bq - cq >= 0) *valid = false;
-        sum += L * (radius / dist) * (radius / dist) * (to.y / dist);
+        if (d.y >= 0) *valid = false;
+        for (const SphereLight& l : lights) {
+          const glm::vec3 to = l.center - x;
+          const double dist = glm::length(to);
+          // Skip pixels where a light sphere itself is in view.
+          const glm::vec3 oc = cb.position - l.center;
+          const float bq = glm::dot(oc, d), cq = glm::dot(oc, oc) - l.radius * l.radius;
+          if (bq * bq - cq >= 0) *valid = false;
+          sum += l.L * (l.radius / dist) * (l.radius / dist) * (to.y / dist);
+        }
       }
     return sum / 16;
   };
-  // Pixels that see any of the light sphere are left out, with a one-pixel margin: a
+  // Pixels that see any of a light sphere are left out, with a one-pixel margin: a
   // sliver of an emitter 50x brighter than the plane would dominate a pixel.
   std::vector<double> exact_at(size_t(W * H));
   std::vector<char> sees_light(size_t(W * H));
@@ -184,9 +201,24 @@ TEST_CASE("sphere light over a white plane: radiance = L (r/D)^2 cos(theta)", "[
       ++n;
     }
   REQUIRE(n > W * H / 2);
-  check_close(nee ? "sphere light over plane, NEE+MIS (mean of the plane's pixels)" : "sphere light over plane, BSDF only",
-              Estimate{sum / n, std::sqrt(var) / n}, exact / n, &r);
+  const std::string name = std::string(what) + (nee ? ", NEE+MIS (mean of the plane's pixels)" : ", BSDF only");
+  check_close(name.c_str(), Estimate{sum / n, std::sqrt(var) / n}, exact / n, &r);
   }
+}
+
+}  // namespace
+
+TEST_CASE("sphere light over a white plane: radiance = L (r/D)^2 cos(theta)", "[gpu][transport]") {
+  check_sphere_lights({{glm::vec3(0.3f, 2.0f, -0.2f), 0.5f, 10.0f}}, "sphere light over plane");
+}
+
+TEST_CASE("several lights: the plane's radiance is the sum of each light's closed form", "[gpu][transport]") {
+  // Three lights of different sizes and radiances, one far off to the side: light
+  // selection and MIS over several emitters must still add up to the sum.
+  check_sphere_lights({{glm::vec3(0.3f, 2.0f, -0.2f), 0.5f, 10.0f},
+                       {glm::vec3(-1.5f, 1.2f, 0.8f), 0.25f, 40.0f},
+                       {glm::vec3(2.5f, 3.0f, -2.0f), 0.8f, 3.0f}},
+                      "three sphere lights over plane");
 }
 
 TEST_CASE("Fresnel closed forms", "[gpu][transport]") {

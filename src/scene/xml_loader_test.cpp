@@ -190,6 +190,11 @@ TEST_CASE("Reflect and PhongSpecular", "[loader]") {
   CHECK(s.materials[1].kind == MaterialKind::PhongSpecular);
   CHECK(s.materials[1].exponent == 100.0f);
   CHECK(s.materials[1].tint == glm::vec3(0.5f));
+  // Attenuate nests: the colours multiply (the furnace test renders a tint as its albedo).
+  const Scene n = load_scene_text(h + "<Objects><Sphere center=\"0 0 0\" radius=\"1\"><Attenuate color=\"0.5 0.5 0.5\">"
+                                      "<Attenuate color=\"0.5 1 0.2\"><Diffuse/></Attenuate></Attenuate></Sphere></Objects></SceneLevel>",
+                                  "x.xml");
+  CHECK(n.materials[0].tint == glm::vec3(0.25f, 0.5f, 0.1f));
   CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\"><PhongSpecular/></Sphere></Objects></SceneLevel>") ==
         "bad.xml:5: <PhongSpecular>: missing attribute 'n'");
 }
