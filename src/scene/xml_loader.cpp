@@ -300,9 +300,11 @@ struct Loader {
     if (generated) {
       if (e->Attribute("src")) a.fail("takes 'src' or 'generate', not both");
       if (a.text("generate") != "icosphere") a.fail("'generate' must be \"icosphere\"");
-      level = int(a.number("level", 5.0f));
+      // Checked as a number before the conversion: a float beyond int's range does not convert.
+      const float lf = a.number("level", 5.0f);
       displace = a.number("displace", 0.0f);
-      if (level < 0 || level > 9) a.fail("'level' must be in 0..9 (20 * 4^level triangles)");
+      if (!(lf >= 0.0f && lf <= 9.0f && lf == std::floor(lf))) a.fail("'level' must be an integer in 0..9 (20 * 4^level triangles)");
+      level = int(lf);
       if (!(displace >= 0.0f && displace < 0.5f)) a.fail("'displace' must be in [0, 0.5)");
       key = "generate:icosphere:" + std::to_string(level) + ":" + std::to_string(displace);
     }

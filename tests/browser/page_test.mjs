@@ -7,7 +7,8 @@
 //   no console errors; the sample limit stops each time exactly; the image converges (a
 //   running mean, not the last pass); its mean radiance matches the native headless render
 //   of the same scene, size and spp; the canvas shows that image; a scene that fails to load
-//   reports its error and the previous one keeps rendering. Saves the page's screenshot and
+//   reports its error and the previous one keeps rendering; the seven seed scenes and the
+//   Cornell box render with the native image's mean. Saves the page's screenshot and
 //   the native PNG in the out folder, and prints the page's speed at 512x512 (informative).
 // Prints 'ok - NAME' or 'not ok - NAME: why' per check, then 'N passed, M failed'; exits 0
 // only if all passed.
@@ -108,10 +109,10 @@ function decodePng(buf) {
   return { width, height, ch, at: (x, y, k) => px[(y * width + x) * ch + k] };
 }
 
-function nativeRender(outPng) {
+function nativeRender(outPng, sceneName = scene, w = size, h = size, samples = spp) {
   if (!existsSync(nativeBin))
     return { error: `native binary ${nativeBin} not found: build it with 'cmake --preset native && cmake --build --preset native'` };
-  const r = spawnSync(nativeBin, ["render", join(repo, "scenes", scene), "--spp", String(spp), "--size", `${size}x${size}`,
+  const r = spawnSync(nativeBin, ["render", join(repo, "scenes", sceneName), "--spp", String(samples), "--size", `${w}x${h}`,
                                   "--out", outPng], { encoding: "utf8" });
   const m = /mean radiance: ([-+.\deE]+) ([-+.\deE]+) ([-+.\deE]+)/.exec(r.stdout ?? "");
   if (r.status !== 0 || !m) return { error: `native render failed (${r.status}): ${r.stderr || r.stdout}` };
@@ -286,6 +287,36 @@ async function main() {
     check("bad scene reports an error and keeps the previous one",
           !loaded && typeof after.error === "string" && after.error.includes("no-such-scene.xml") && after.scene === before.scene,
           `load returned ${loaded}, error ${JSON.stringify(after.error)}, scene ${after.scene}`);
+
+    // The seven seed scenes and the Cornell box in the page: each loads, renders without
+    // error and its mean matches the native render of the same size and samples (the
+    // tolerance of the first check, from the page's own per-pixel variance). Screenshots
+    // in the out folder (seed-*.png) for people to look at.
+    const seedScenes = ["reference/scene0.xml", "seed/02-balls-crystal-table.xml", "seed/03-balls-solid-table-wood.xml",
+                        "reference/scene2.xml", "seed/05-cornell-blue-yellow.xml", "seed/06-logo.xml",
+                        "seed/07-mesh-on-perlin.xml", "cornell-box.xml"];
+    const [sw, sh, sspp] = [160, 90, 8];
+    await page.evaluate(([w, h]) => window.ptSetSize(w, h), [sw, sh]);
+    const failedScenes = [];
+    for (const name of seedScenes) {
+      await page.evaluate(() => window.ptSetLimit(0));
+      const ok = await page.evaluate((p) => window.ptLoadScene(p), `/scenes/${name}`);
+      await page.evaluate((n) => window.ptSetLimit(n), sspp);
+      await page.waitForFunction(([p, n]) => { const s = window.ptStats(); return s.scene.endsWith(p) && s.samples >= n; },
+                                 [name, sspp], { timeout: 120000, polling: 100 });
+      const st = await stats(page);
+      await page.screenshot({ path: join(outDir, `seed-${name.replace(/[/.]/g, "-")}.png`) });
+      const nat = nativeRender(join(outDir, `seed-${name.replace(/[/.]/g, "-")}-native.png`), name, sw, sh, sspp);
+      const se = meanStdError(await page.evaluate(() => window.ptRadiance()), st.samples);
+      const tol = Math.max(kMeanRelFloor, kMeanSigmas * se);
+      const rel = nat.error ? [Infinity] : st.mean.map((v, k) => (v - nat.mean[k]) / nat.mean[k]);
+      const worst = Math.max(...rel.map(Math.abs));
+      console.log(`# ${name}: ${st.samples} spp at ${st.width}x${st.height}, mean ${st.mean.map((v) => v.toFixed(4)).join(" ")}` +
+                  (nat.error ? `; native: ${nat.error}` : `; native ${nat.mean.map((v) => v.toFixed(4)).join(" ")}, ` +
+                   `worst ${(100 * worst).toFixed(2)}% (tolerance ${(100 * tol).toFixed(2)}%)`));
+      if (!ok || st.error || st.samples !== sspp || !(worst <= tol)) failedScenes.push(`${name} (${st.error ?? (ok ? `${(100 * worst).toFixed(2)}%` : "load failed")})`);
+    }
+    check("the seven seed scenes and the Cornell box render in the page as natively", failedScenes.length === 0, failedScenes.join(", "));
 
     check("no console or page errors", errors.length === 0, errors.join(" | "));
     await page.close();
