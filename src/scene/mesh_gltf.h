@@ -3,6 +3,7 @@
 // one per mesh primitive per node, each with its node's world transform. A primitive used
 // by several nodes is one MeshData shared by all of them (instancing).
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,6 +30,16 @@ struct GltfPart {
   GltfMaterial material;
 };
 
-std::vector<GltfPart> load_gltf(const std::string& path);  // throws InputError naming the file
+// Every other file a glTF names (a buffer by a URI that is not a data: URI) goes
+// through the resolver: given the path relative to the glTF file's folder, it returns the
+// path to open, or throws InputError to refuse it (the scene loader records it as a
+// dependency; the fuzzer refuses every one). An empty resolver refuses them all.
+using GltfResolver = std::function<std::string(const std::string& path)>;
+
+// Throw InputError naming the file and where in it: "file.gltf:12:" (JSON syntax),
+// "file.glb: byte 20:" (GLB structure) or "file.gltf: /accessors/3:" (a JSON pointer).
+std::vector<GltfPart> load_gltf(const std::string& path, const GltfResolver& resolve);
+// From memory; binary glTF is told from JSON by its magic ("glTF"), not by the name.
+std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve);
 
 }  // namespace pt

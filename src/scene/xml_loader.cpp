@@ -325,7 +325,11 @@ struct Loader {
         if (generated) {
           parts.push_back({std::make_shared<const MeshData>(generate_icosphere(level, displace)), glm::mat4(1.0f), {}});
         } else if (gltf) {
-          parts = load_gltf(src);
+          // The glTF's own buffer files are dependencies too (watch reloads on their change).
+          parts = load_gltf(src, [this](const std::string& p) {
+            scene.files.push_back(p);
+            return p;
+          });
         } else {
           parts.push_back({std::make_shared<const MeshData>(ends(".obj") ? load_mesh_obj(src) : load_mesh_json(src)), glm::mat4(1.0f), {}});
         }
@@ -342,7 +346,7 @@ struct Loader {
     for (const GltfPart& part : parts) {
       const glm::mat4 world = place * part.transform;
       for (const glm::vec3& v : part.mesh->positions)
-        if (glm::any(glm::greaterThan(glm::abs(glm::vec3(world * glm::vec4(v, 1.0f))), glm::vec3(kMaxMagnitude))))
+        if (!glm::all(glm::lessThanEqual(glm::abs(glm::vec3(world * glm::vec4(v, 1.0f))), glm::vec3(kMaxMagnitude))))  // NaN too
           a.fail("scaled and moved, the mesh has a vertex beyond 1e9");
       Shape s;
       s.kind = ShapeKind::Mesh;

@@ -1,0 +1,89 @@
+// glTF from memory (the fuzzer's entry point): .glb and .gltf told apart by the magic and
+// giving the same mesh; files named by URI go through the resolver only (refused without
+// one, recorded as the scene's dependencies with one).
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "scene/mesh_gltf.h"
+#include "scene/xml_loader.h"
+#include "test_paths.h"
+
+using namespace pt;
+
+namespace {
+
+std::string bytes_of(const std::string& rel) {
+  const auto b = read_file(repo_path(rel));
+  REQUIRE(b);
+  return *b;
+}
+
+std::string error_of(const std::string& bytes, const GltfResolver& resolve) {
+  try {
+    parse_gltf(bytes, "m.gltf", resolve);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("glTF from memory: binary and JSON by their magic, the same quad", "[loader][mesh][gltf]") {
+  for (const char* f : {"quad.glb", "quad-textured.gltf", "quad-textured.glb"}) {
+    INFO(f);
+    // The names say nothing: the .glb is read as "m.gltf" and the other way round.
+    const std::vector<GltfPart> parts = parse_gltf(bytes_of(std::string("tests/fuzz/corpus/mesh_gltf/") + f), "m.gltf", {});
+    REQUIRE(parts.size() == 1);
+    const MeshData& m = *parts[0].mesh;
+    REQUIRE(m.positions.size() == 4);
+    REQUIRE(m.normals.size() == 4);
+    REQUIRE(m.uvs.size() == 4);
+    REQUIRE(m.triangles.size() == 2);
+    CHECK(m.positions[2] == glm::vec3(1, 1, 0));
+    CHECK(m.normals[3] == glm::vec3(0, 0, 1));
+    CHECK(m.triangles[1] == glm::uvec3(0, 2, 3));
+  }
+  CHECK(error_of("", {}) == "m.gltf: JSON string too short.");
+  CHECK(error_of("glTF\x02", {}) == "m.gltf: byte 5: the file ends inside the GLB header (truncated)");
+}
+
+TEST_CASE("glTF buffer files go through the resolver: refused without one, dependencies with one", "[loader][mesh][gltf]") {
+  // missing-buffer.gltf names "no-such.bin" (the quad's geometry, as quad.glb's BIN chunk).
+  const std::string dir = std::string(PT_BINARY_DIR) + "/gltf-test";
+  std::filesystem::create_directories(dir);
+  const std::string glb = bytes_of("tests/fuzz/corpus/mesh_gltf/quad.glb");
+  uint32_t json = 0, bin = 0;
+  std::memcpy(&json, glb.data() + 12, 4);
+  std::memcpy(&bin, glb.data() + 20 + json, 4);
+  std::ofstream(dir + "/no-such.bin", std::ios::binary) << glb.substr(20 + json + 8, bin);
+  const std::string text = bytes_of("tests/malformed/gltf/missing-buffer.gltf");
+  std::ofstream(dir + "/quad.gltf", std::ios::binary) << text;
+
+  CHECK(error_of(text, {}) == "m.gltf: /buffers/0: file references are disabled for this glTF");
+  std::vector<std::string> asked;
+  const std::vector<GltfPart> parts = parse_gltf(text, dir + "/quad.gltf", [&](const std::string& p) {
+    asked.push_back(p);
+    return p;
+  });
+  CHECK(asked == std::vector<std::string>{dir + "/no-such.bin"});
+  REQUIRE(parts.size() == 1);
+  CHECK(parts[0].mesh->triangles.size() == 2);
+  CHECK(error_of(text, [](const std::string&) -> std::string { throw InputError("x.xml", 3, "no"); }) ==
+        "m.gltf: /buffers/0: x.xml:3: no");
+
+  const std::string scene = "<SceneLevel><Camera position=\"0 0 5\"/><Objects><Mesh src=\"quad.gltf\"/></Objects></SceneLevel>";
+  const Scene s = load_scene_text(scene, dir + "/s.xml");
+  CHECK(s.files == std::vector<std::string>{dir + "/s.xml", dir + "/quad.gltf", dir + "/no-such.bin"});
+  try {
+    load_scene_text(scene, dir + "/s.xml", false);
+    FAIL("loaded");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("file references are disabled") != std::string::npos);
+  }
+}
