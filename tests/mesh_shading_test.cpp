@@ -2,11 +2,14 @@
 // equal to the geometric one render exactly as no normals; normals tilted by tau under a
 // uniform sky give the closed form (1 + cos tau) / 2 (the cosine lobe reaching below the
 // surface collects nothing, and nothing leaks through), also when the normals come from an
-// OBJ file's "vn"; a glTF file renders without NaN.
+// OBJ file's "vn"; a glTF file renders without NaN; a glTF base-colour texture shows its
+// colours where its uv put them.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdio>
+
+#include <glm/gtc/type_ptr.hpp>
 
 #include "gl_context.h"
 #include "scene/mesh_obj.h"
@@ -107,4 +110,48 @@ TEST_CASE("the glTF sample scene loads (instances share one mesh) and renders wi
   const RenderResult r = render_scene(s, 48, 32, 4);
   CHECK(r.counters.bad_samples == 0);
   CHECK(region_mean(r, 0, 0, 48, 32).mean > 0.05);
+}
+
+// assets/models/textured-quad.*: the quad z = 0, -1..1, facing +z, its base colour a 4x4 PNG
+// of four quadrants, red, green (top) / blue, white (bottom). Seen from +z under a uniform
+// sky of radiance 1, a Lambertian surface returns its albedo: each quadrant's middle
+// (texels of one colour on every side, so bilinear filtering does not blend) must show the
+// texture's linear colour, upright (the v flip), in the .gltf (image by file URI, a scene
+// dependency) and the .glb (image in the BIN chunk).
+TEST_CASE("a glTF base-colour texture renders with its colours where its uv put them", "[gpu][mesh][gltf]") {
+  test_gl();
+  for (const char* file : {"textured-quad.gltf", "textured-quad.glb"}) {
+    INFO(file);
+    const Scene s = load_scene_text(
+        "<SceneLevel><Camera position=\"0 0 3\" yaw=\"90\" pitch=\"0\"/><Environment color=\"1 1 1\"/><Objects>"
+        "<Mesh src=\"../assets/models/" + std::string(file) + "\"/></Objects></SceneLevel>",
+        repo_path("scenes/textured-quad-test.xml"));
+    REQUIRE(s.materials.size() == 1);
+    CHECK(s.materials[0].kind == MaterialKind::Textured);
+    if (std::string(file) == "textured-quad.gltf") CHECK(s.files.back() == repo_path("scenes/../assets/models/textured-quad.png"));
+    const int n = 32;
+    const RenderResult r = render_scene(s, n, n, 16);
+    CHECK(r.counters.bad_samples == 0);
+    // Pixels 8..11 and 20..23 see x (and y) in [-0.75, -0.25] and [0.25, 0.75] of the quad
+    // (half-extent 3 tan 22.5 deg = 1.243 at the quad): the middle of each quadrant.
+    // Rows of the result run bottom to top.
+    auto mean = [&](int x0, int y0) {
+      glm::dvec3 m(0.0);
+      for (int y = y0; y < y0 + 4; ++y)
+        for (int x = x0; x < x0 + 4; ++x) m += glm::dvec3(glm::make_vec3(&r.rgba[(size_t(y) * n + size_t(x)) * 4]));
+      return m / 16.0;
+    };
+    const struct {
+      const char* name;
+      int x, y;
+      glm::dvec3 rgb;
+    } quadrants[] = {{"top left", 8, 20, {1, 0, 0}}, {"top right", 20, 20, {0, 1, 0}}, {"bottom left", 8, 8, {0, 0, 1}}, {"bottom right", 20, 8, {1, 1, 1}}};
+    for (const auto& q : quadrants) {
+      const glm::dvec3 m = mean(q.x, q.y);
+      std::printf("%s, %-12s: %.4f %.4f %.4f (texture %.0f %.0f %.0f)\n", file, q.name, m.x, m.y, m.z, q.rgb.x, q.rgb.y, q.rgb.z);
+      INFO(q.name);
+      // Every path is one bounce to the sky with weight = albedo: no noise beyond float rounding.
+      CHECK(glm::all(glm::lessThan(glm::abs(m - q.rgb), glm::dvec3(1e-3))));
+    }
+  }
 }

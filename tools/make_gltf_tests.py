@@ -3,8 +3,11 @@
   tests/fuzz/corpus/mesh_gltf/   seeds of the glTF fuzzer: a textured quad as .gltf (data URIs)
                                  and .glb (one BIN chunk holding the geometry and the PNG)
   tests/malformed/gltf/          the same quad broken in one way each (tests/malformed/expected.tsv)
-The quad: 4 vertices in the z = 0 plane with normals +z and uv, 2 triangles (uint16 indices), a
-material whose baseColorTexture is a 2x2 PNG (red, green / blue, white)."""
+  assets/models/textured-quad.*  the quad with its texture as a separate PNG (.gltf, by file URI)
+                                 and embedded (.glb); tests/mesh_shading_test.cpp renders them
+The quad: 4 vertices in the z = 0 plane (-1..1) with normals +z and uv, 2 triangles (uint16
+indices), a material whose baseColorTexture is a 4x4 PNG of four 2x2 quadrants: red, green
+(top row) / blue, white (bottom row), shown upright from +z."""
 import base64, copy, json, os, struct, zlib
 
 ROOT = os.path.join(os.path.dirname(__file__), "..")
@@ -16,7 +19,8 @@ def png(w, h, rows):  # rows of (r, g, b) tuples, top row first; 8-bit RGB, no f
     return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
             + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
 
-PNG = png(2, 2, [[(255, 0, 0), (0, 255, 0)], [(0, 0, 255), (255, 255, 255)]])
+R, G, B, W = (255, 0, 0), (0, 255, 0), (0, 0, 255), (255, 255, 255)
+PNG = png(4, 4, [[R, R, G, G], [R, R, G, G], [B, B, W, W], [B, B, W, W]])
 POS = [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)]
 NOR = [(0, 0, 1)] * 4
 UV = [(0, 1), (1, 1), (1, 0), (0, 0)]  # glTF uv: v down from the image's top row
@@ -109,4 +113,17 @@ g9 = copy.deepcopy(plain); g9["extras"] = "@"
 write(bad + "deep-nesting.gltf", as_gltf(g9, pbuf).replace(b'"@"', b"[" * 100 + b"]" * 100))
 g10 = copy.deepcopy(plain); g10["nodes"][0]["translation"] = [1e30, 0, 0]
 write(bad + "absurd-translation.gltf", as_gltf(g10, pbuf))
-print("wrote", seeds, bad)
+g11 = json.loads(as_gltf(g, buf)); g11["images"][0]["uri"] = "no-such.png"
+write(bad + "missing-image.gltf", json.dumps(g11, indent=1).encode() + b"\n")
+write(bad + "bad-image.gltf", as_gltf(g, buf, image=b"this is not a PNG file at all"))
+g12 = json.loads(as_gltf(g, buf)); g12["textures"][0]["source"] = 3
+write(bad + "no-such-image.gltf", json.dumps(g12, indent=1).encode() + b"\n")
+g13 = copy.deepcopy(g); del g13["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"]
+write(bad + "texture-without-uv.gltf", as_gltf(g13, buf))
+
+models = "assets/models/"
+write(models + "textured-quad.png", PNG)
+q = json.loads(as_gltf(g, buf, indent=None)); q["images"][0]["uri"] = "textured-quad.png"
+write(models + "textured-quad.gltf", json.dumps(q, separators=(",", ":")).encode() + b"\n")
+write(models + "textured-quad.glb", as_glb(g, buf))
+print("wrote", seeds, bad, models)

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <memory>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -49,25 +50,35 @@ std::string pointer(const char* array, size_t index) { return std::string("/") +
 bool file_exists(const std::string&, void*) { return true; }
 std::string expand_path(const std::string& p, void*) { return p; }
 bool write_file(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+// A file named by a URI (tinygltf has URL-decoded a buffer's; an image's is decoded
+// here), through the resolver; false with *why when refused or unreadable.
+bool read_referenced(const Context& c, const std::string& uri, const char* kind, std::string* out, std::string* why) {
+  const std::string rel = !uri.empty() && uri[0] == '/' ? uri : directory_of(c.path) + "/" + uri;
+  if (!c.resolve || !*c.resolve) {
+    *why = "file references are disabled for this glTF";
+    return false;
+  }
+  try {
+    const std::string file = (*c.resolve)(rel);
+    if (auto bytes = read_file(file)) {
+      *out = std::move(*bytes);
+      return true;
+    }
+    *why = std::string("cannot open the ") + kind + " file " + file;
+  } catch (const InputError& e) {
+    *why = e.what();
+  }
+  return false;
+}
+
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& uri, void* user) {
   auto& c = *static_cast<Context*>(user);
   // Buffers are parsed in order and appended when read: the one being read is the next.
   const std::string where = pointer("buffers", c.model ? c.model->buffers.size() : 0);
-  const std::string rel = !uri.empty() && uri[0] == '/' ? uri : directory_of(c.path) + "/" + uri;
-  std::string why;
-  if (!c.resolve || !*c.resolve) {
-    why = "file references are disabled for this glTF";
-  } else {
-    try {
-      const std::string file = (*c.resolve)(rel);
-      if (const auto bytes = read_file(file)) {
-        out->assign(bytes->begin(), bytes->end());
-        return true;
-      }
-      why = "cannot open the buffer file " + file;
-    } catch (const InputError& e) {
-      why = e.what();
-    }
+  std::string bytes, why;
+  if (read_referenced(c, uri, "buffer", &bytes, &why)) {
+    out->assign(bytes.begin(), bytes.end());
+    return true;
   }
   if (c.error.empty()) c.error = where + ": " + why;
   *err = "refused";
@@ -262,42 +273,92 @@ glm::mat4 node_matrix(const tinygltf::Node& n) {
   return m;
 }
 
+// Materials, with their image maps decoded once per image (only those a part uses).
 // Factors outside their ranges would make a material that creates energy or a NaN in
 // the shader: refused, with the material's pointer.
-GltfMaterial material_of(const Reader& r, const tinygltf::Model& model, int index, const std::string& user) {
-  GltfMaterial g;
-  if (index < 0) return g;
-  if (size_t(index) >= model.materials.size()) r.fail(user, "no material " + std::to_string(index));
-  const std::string at = pointer("materials", size_t(index));
-  const tinygltf::Material& m = model.materials[size_t(index)];
-  const auto& pbr = m.pbrMetallicRoughness;
-  auto unit = [&](double v, const char* what) {
-    if (!(v >= 0.0 && v <= 1.0)) r.fail(at, std::string(what) + " must be in [0, 1]");
-    return float(v);
-  };
-  if (pbr.baseColorFactor.size() >= 3)
-    g.base_color = glm::vec3(unit(pbr.baseColorFactor[0], "baseColorFactor"), unit(pbr.baseColorFactor[1], "baseColorFactor"),
-                             unit(pbr.baseColorFactor[2], "baseColorFactor"));
-  g.metallic = unit(pbr.metallicFactor, "metallicFactor");
-  g.roughness = unit(pbr.roughnessFactor, "roughnessFactor");
-  if (m.emissiveFactor.size() == 3) {
-    g.emissive = glm::vec3(unit(m.emissiveFactor[0], "emissiveFactor"), unit(m.emissiveFactor[1], "emissiveFactor"),
-                           unit(m.emissiveFactor[2], "emissiveFactor"));
-    if (auto t = m.extensions.find("KHR_materials_emissive_strength"); t != m.extensions.end() && t->second.Has("emissiveStrength")) {
-      const double k = t->second.Get("emissiveStrength").GetNumberAsDouble();
-      if (!(k >= 0.0 && k <= 1e6)) r.fail(at, "emissiveStrength must be in [0, 1e6]");
-      g.emissive *= float(k);
+class Materials {
+ public:
+  Materials(const Reader& r, const tinygltf::Model& m, const Context& c) : r_(r), m_(m), c_(c) {}
+
+  const GltfMaterial& get(int index, const std::string& user) {
+    static const GltfMaterial kDefault;
+    if (index < 0) return kDefault;
+    if (size_t(index) >= m_.materials.size()) r_.fail(user, "no material " + std::to_string(index));
+    auto& slot = materials_[index];
+    if (!slot) slot = std::make_unique<GltfMaterial>(read(index));
+    return *slot;
+  }
+
+ private:
+  GltfMaterial read(int index) {
+    GltfMaterial g;
+    const std::string at = pointer("materials", size_t(index));
+    const tinygltf::Material& m = m_.materials[size_t(index)];
+    const auto& pbr = m.pbrMetallicRoughness;
+    auto unit = [&](double v, const char* what) {
+      if (!(v >= 0.0 && v <= 1.0)) r_.fail(at, std::string(what) + " must be in [0, 1]");
+      return float(v);
+    };
+    if (pbr.baseColorFactor.size() >= 3)
+      g.base_color = glm::vec3(unit(pbr.baseColorFactor[0], "baseColorFactor"), unit(pbr.baseColorFactor[1], "baseColorFactor"),
+                               unit(pbr.baseColorFactor[2], "baseColorFactor"));
+    g.metallic = unit(pbr.metallicFactor, "metallicFactor");
+    g.roughness = unit(pbr.roughnessFactor, "roughnessFactor");
+    if (m.emissiveFactor.size() == 3) {
+      g.emissive = glm::vec3(unit(m.emissiveFactor[0], "emissiveFactor"), unit(m.emissiveFactor[1], "emissiveFactor"),
+                             unit(m.emissiveFactor[2], "emissiveFactor"));
+      if (auto t = m.extensions.find("KHR_materials_emissive_strength"); t != m.extensions.end() && t->second.Has("emissiveStrength")) {
+        const double k = t->second.Get("emissiveStrength").GetNumberAsDouble();
+        if (!(k >= 0.0 && k <= 1e6)) r_.fail(at, "emissiveStrength must be in [0, 1e6]");
+        g.emissive *= float(k);
+      }
     }
+    if (auto t = m.extensions.find("KHR_materials_transmission"); t != m.extensions.end() && t->second.Has("transmissionFactor"))
+      g.transmission = unit(t->second.Get("transmissionFactor").GetNumberAsDouble(), "transmissionFactor");
+    if (auto t = m.extensions.find("KHR_materials_ior"); t != m.extensions.end() && t->second.Has("ior")) {
+      const double ior = t->second.Get("ior").GetNumberAsDouble();
+      if (!(ior >= 1.0 && ior <= 10.0)) r_.fail(at, "ior must be in [1, 10]");
+      g.ior = float(ior);
+    }
+    g.base_color_map = map(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, at + "/pbrMetallicRoughness/baseColorTexture");
+    g.metallic_roughness_map = map(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                   at + "/pbrMetallicRoughness/metallicRoughnessTexture");
+    g.normal_map = map(m.normalTexture.index, m.normalTexture.texCoord, at + "/normalTexture");
+    return g;
   }
-  if (auto t = m.extensions.find("KHR_materials_transmission"); t != m.extensions.end() && t->second.Has("transmissionFactor"))
-    g.transmission = unit(t->second.Get("transmissionFactor").GetNumberAsDouble(), "transmissionFactor");
-  if (auto t = m.extensions.find("KHR_materials_ior"); t != m.extensions.end() && t->second.Has("ior")) {
-    const double ior = t->second.Get("ior").GetNumberAsDouble();
-    if (!(ior >= 1.0 && ior <= 10.0)) r.fail(at, "ior must be in [1, 10]");
-    g.ior = float(ior);
+
+  std::shared_ptr<const GltfImage> map(int texture, int tex_coord, const std::string& at) {
+    if (texture < 0) return nullptr;
+    if (tex_coord != 0) r_.fail(at, "texCoord " + std::to_string(tex_coord) + " is not supported (only TEXCOORD_0)");
+    if (size_t(texture) >= m_.textures.size()) r_.fail(at, "no texture " + std::to_string(texture));
+    const int source = m_.textures[size_t(texture)].source;
+    if (source < 0) r_.fail(pointer("textures", size_t(texture)), "no source (images of formats given by extensions are not read)");
+    if (size_t(source) >= m_.images.size()) r_.fail(pointer("textures", size_t(texture)), "no image " + std::to_string(source));
+    auto& slot = images_[source];
+    if (slot) return slot;
+    const std::string where = pointer("images", size_t(source));
+    const tinygltf::Image& img = m_.images[size_t(source)];
+    std::string bytes, why;
+    if (img.as_is) {
+      bytes.assign(img.image.begin(), img.image.end());  // embedded: a data: URI or a bufferView
+    } else if (img.uri.empty()) {
+      r_.fail(where, "no image data");
+    } else if (!read_referenced(c_, tinygltf::dlib::urldecode(img.uri), "image", &bytes, &why)) {
+      r_.fail(where, why);
+    }
+    auto out = std::make_shared<GltfImage>();
+    out->name = c_.path + "#" + where;
+    if (!decode_image(bytes, &out->image, &why)) r_.fail(where, why);
+    slot = out;
+    return slot;
   }
-  return g;
-}
+
+  const Reader& r_;
+  const tinygltf::Model& m_;
+  const Context& c_;
+  std::map<int, std::unique_ptr<GltfMaterial>> materials_;
+  std::map<int, std::shared_ptr<const GltfImage>> images_;
+};
 
 const char* mode_name(int mode) {
   switch (mode) {
@@ -362,6 +423,7 @@ std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& pa
   if (!ctx.error.empty()) throw InputError(path, 0, ctx.error);
   if (!ok) fail_parse(err, path, json, json_size, json_at);
   const Reader r(path, model);
+  Materials materials(r, model, ctx);
   // Keyed by the accessors a primitive reads: primitives (or meshes) that differ only in
   // material share one MeshData.
   std::map<std::vector<int>, std::shared_ptr<const MeshData>> cache;
@@ -392,7 +454,8 @@ std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& pa
     if (auto t = p.attributes.find("TEXCOORD_0"); t != p.attributes.end()) {
       const std::vector<float> f = r.floats(t->second, 2, at + "/attributes/TEXCOORD_0");
       if (f.size() / 2 != d->positions.size()) r.fail(at, "TEXCOORD_0 and POSITION counts differ");
-      for (size_t i = 0; i + 1 < f.size(); i += 2) d->uvs.emplace_back(f[i], f[i + 1]);
+      // glTF's v runs down from the image's top row, ours up from its bottom row.
+      for (size_t i = 0; i + 1 < f.size(); i += 2) d->uvs.emplace_back(f[i], 1.0f - f[i + 1]);
     }
     std::vector<uint32_t> idx;
     if (p.indices >= 0) {
@@ -447,7 +510,9 @@ std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& pa
       for (size_t p = 0; p < mesh.primitives.size(); ++p) {
         std::shared_ptr<const MeshData> d = primitive(n.mesh, int(p));
         const std::string pat = pointer("meshes", size_t(n.mesh)) + pointer("primitives", p);
-        const GltfMaterial mat = material_of(r, model, mesh.primitives[p].material, pat + "/material");
+        const GltfMaterial& mat = materials.get(mesh.primitives[p].material, pat + "/material");
+        if ((mat.base_color_map || mat.metallic_roughness_map || mat.normal_map) && d->uvs.empty())
+          r.fail(pat, "its material has image maps, but it has no TEXCOORD_0");
         if (!d->triangles.empty()) parts.push_back({d, world, mat});
       }
     }

@@ -48,6 +48,11 @@ TEST_CASE("glTF from memory: binary and JSON by their magic, the same quad", "[l
     CHECK(m.positions[2] == glm::vec3(1, 1, 0));
     CHECK(m.normals[3] == glm::vec3(0, 0, 1));
     CHECK(m.triangles[1] == glm::uvec3(0, 2, 3));
+    // The file's uv (0, 1) (1, 1) (1, 0) (0, 0): glTF's v runs down the image, ours up.
+    CHECK(m.uvs[0] == glm::vec2(0, 0));
+    CHECK(m.uvs[2] == glm::vec2(1, 1));
+    CHECK(m.uvs[3] == glm::vec2(0, 1));
+    CHECK(bool(parts[0].material.base_color_map) == (std::string(f) != "quad.glb"));
   }
   CHECK(error_of("", {}) == "m.gltf: JSON string too short.");
   CHECK(error_of("glTF\x02", {}) == "m.gltf: byte 5: the file ends inside the GLB header (truncated)");
@@ -86,4 +91,43 @@ TEST_CASE("glTF buffer files go through the resolver: refused without one, depen
   } catch (const InputError& e) {
     CHECK(std::string(e.what()).find("file references are disabled") != std::string::npos);
   }
+}
+
+TEST_CASE("glTF maps become <Textured>: base colour, normal, metalness as the specular weight", "[loader][mesh][gltf]") {
+  // The textured quad (its 4x4 image: red, green / blue, white quadrants) with that image
+  // also as metallicRoughnessTexture (metalness = blue) and normalTexture.
+  std::string text = bytes_of("tests/fuzz/corpus/mesh_gltf/quad-textured.gltf");
+  const std::string from = "\"metallicFactor\": 0.0, \"roughnessFactor\": 1.0, \"baseColorTexture\": {\"index\": 0}}";
+  const size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, from.size(),
+               "\"metallicFactor\": 0.5, \"roughnessFactor\": 0.5, \"baseColorTexture\": {\"index\": 0}, "
+               "\"metallicRoughnessTexture\": {\"index\": 0}}, \"normalTexture\": {\"index\": 0}");
+  const std::string factor = "\"baseColorFactor\": [1, 1, 1, 1]";
+  REQUIRE(text.find(factor) != std::string::npos);
+  text.replace(text.find(factor), factor.size(), "\"baseColorFactor\": [0.5, 1, 1, 1]");
+  const std::string dir = std::string(PT_BINARY_DIR) + "/gltf-test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/maps.gltf", std::ios::binary) << text;
+  const Scene s = load_scene_text("<SceneLevel><Camera position=\"0 0 5\"/><Objects><Mesh src=\"maps.gltf\"/></Objects></SceneLevel>",
+                                  dir + "/s.xml");
+  REQUIRE(s.materials.size() == 1);
+  const Material& m = s.materials[0];
+  CHECK(m.kind == MaterialKind::Textured);
+  CHECK(m.tint == glm::vec3(0.5f, 1.0f, 1.0f));
+  CHECK(m.exponent == Approx(30.0));  // 2 / alpha^2 - 2, alpha = roughness^2 = 0.25
+  REQUIRE(s.images.size() == 3);
+  REQUIRE(m.diffuse_map >= 0);
+  REQUIRE(m.specular_map >= 0);
+  REQUIRE(m.normal_map >= 0);
+  // Texel (0, 0) of a map is the image's bottom-left: the blue quadrant.
+  const ImageMap& d = *s.images[size_t(m.diffuse_map)];
+  const ImageMap& sp = *s.images[size_t(m.specular_map)];
+  CHECK(d.rgba[0] == 0.0f);
+  CHECK(d.rgba[2] == 1.0f);
+  CHECK(sp.rgba[0] == 0.5f);  // blue 1 x metallicFactor 0.5, grey
+  CHECK(sp.rgba[1] == 0.5f);
+  const size_t top_left = size_t(3 * 4) * 4;  // row 3 (the image's top), column 0: red
+  CHECK(sp.rgba[top_left] == 0.0f);
+  CHECK(s.images[size_t(m.normal_map)]->normal);
 }
