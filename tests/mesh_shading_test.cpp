@@ -12,6 +12,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl_context.h"
+#include "render/camera.h"
 #include "scene/mesh_obj.h"
 #include "glsl_harness.h"
 #include "scene/xml_loader.h"
@@ -98,6 +99,46 @@ TEST_CASE("OBJ vertex normals (vn) are the shading normals: tilted by 60 deg, (1
   const RenderResult flat = render_scene(quad(glm::vec3(0.0f), "0 1 0"), 32, 32, 16);
   const RenderResult none = render_scene(quad(glm::vec3(0.0f)), 32, 32, 16);
   CHECK(flat.rgba == none.rgba);
+}
+
+// Interpolation: one OBJ quad (two triangles, x and z in [-10, 10]) whose vertices at
+// x = -10 have normal (-sin 60, cos 60, 0) and those at x = +10 (sin 60, cos 60, 0).
+// Barycentric interpolation of these unit normals is (x / 10 sin 60, cos 60, 0) on either
+// triangle, tilted by theta(x) = atan(tan 60 x / 10), so under the uniform sky the
+// radiance is (1 + cos theta(x)) / 2: 1 in the middle, 0.75 at the edges. Flat shading (a
+// normal per face) or the geometric normal (1 everywhere) would not give this ramp. Each
+// band of rows is compared with the closed form averaged over its pixels' footprints on
+// the ground (the production camera basis, box pixel filter).
+TEST_CASE("OBJ vertex normals are interpolated across triangles: a ramp of tilts gives its closed form", "[gpu][mesh][obj]") {
+  test_gl();
+  Scene s = quad(glm::vec3(0.0f));
+  s.meshes[0] = std::make_shared<MeshData>(parse_mesh_obj(
+      "v -10 0 -10\nv 10 0 -10\nv 10 0 10\nv -10 0 10\nvn -0.8660254 0.5 0\nvn 0.8660254 0.5 0\n"
+      "f 1//1 4//1 3//2\nf 1//1 3//2 2//2\n",
+      "ramp.obj"));
+  const int n = 32, spp = 64;
+  const RenderResult r = render_scene(s, n, n, spp);
+  REQUIRE(r.counters.bad_samples == 0);
+  const CameraBasis cam = camera_basis(s.camera, 1.0f);
+  auto exact_at = [&](double ndc_x, double ndc_y) {
+    const glm::dvec3 d = glm::dvec3(cam.forward) + ndc_x * glm::dvec3(cam.right) + ndc_y * glm::dvec3(cam.up);
+    const double x = double(cam.position.x) + d.x * (-double(cam.position.y) / d.y);  // where the ray meets y = 0
+    const double theta = std::atan(std::tan(glm::radians(60.0)) * x / 10.0);
+    return (1.0 + std::cos(theta)) / 2.0;
+  };
+  for (int band = 0; band < 4; ++band) {
+    const int y0 = band * 8;
+    const Estimate e = region_mean(r, 0, y0, n, y0 + 8);
+    double exact = 0.0;
+    const int k = 8;  // k x k points per pixel
+    for (int y = y0; y < y0 + 8; ++y)
+      for (int x = 0; x < n; ++x)
+        for (int j = 0; j < k; ++j)
+          for (int i = 0; i < k; ++i) exact += exact_at((x + (i + 0.5) / k) / n * 2.0 - 1.0, (y + (j + 0.5) / k) / n * 2.0 - 1.0);
+    exact /= double(8 * n * k * k);
+    std::printf("OBJ normal ramp, rows %2d..%2d: %.5f, exact %.5f (%+.2f se)\n", y0, y0 + 7, e.mean, exact, (e.mean - exact) / e.se);
+    CHECK(std::abs(e.mean - exact) < 4.0 * e.se + 1e-6);
+  }
 }
 
 TEST_CASE("the glTF sample scene loads (instances share one mesh) and renders without NaN", "[gpu][mesh][gltf]") {
