@@ -2,7 +2,7 @@
 // equal to the geometric one render exactly as no normals; normals tilted by tau under a
 // uniform sky give the closed form (1 + cos tau) / 2 (the cosine lobe reaching below the
 // surface collects nothing, and nothing leaks through), also when the normals come from an
-// OBJ file's "vn"; a glTF file renders without NaN; a glTF base-colour texture shows its
+// OBJ file's "vn", and interpolated across triangles; a glTF file renders without NaN; a glTF base-colour texture shows its
 // colours where its uv put them.
 #include <catch2/catch.hpp>
 

@@ -71,6 +71,7 @@ TEST_CASE("glTF buffer files go through the resolver: refused without one, depen
   std::ofstream(dir + "/quad.gltf", std::ios::binary) << text;
 
   CHECK(error_of(text, {}) == "m.gltf: /buffers/0: file references are disabled for this glTF");
+  CHECK(error_of(bytes_of("tests/malformed/gltf/missing-image.gltf"), {}) == "m.gltf: /images/0: file references are disabled for this glTF");
   std::vector<std::string> asked;
   const std::vector<GltfPart> parts = parse_gltf(text, dir + "/quad.gltf", [&](const std::string& p) {
     asked.push_back(p);
