@@ -346,7 +346,7 @@ struct Loader {
         if (generated) {
           parts.push_back({std::make_shared<const MeshData>(generate_icosphere(level, displace)), glm::mat4(1.0f), {}});
         } else if (gltf) {
-          // The glTF's own buffer files are dependencies too (watch reloads on their change).
+          // The glTF's own buffer and image files are dependencies too (watch reloads on their change).
           parts = load_gltf(src, [this](const std::string& p) {
             scene.files.push_back(p);
             return p;
