@@ -63,10 +63,11 @@ std::string scene_for(const Case& c) {
   return path;
 }
 
-// The message names the broken file, then where in it: ":line:", ": byte N:" or a pixel.
+// The message names the broken file, then where in it: ":line:", ": byte N:", a pixel, or
+// (glTF, whose parsed JSON has no lines) a JSON pointer ": /accessors/3:".
 bool names_location(const std::string& msg, const std::string& base) {
   const std::string b = std::regex_replace(base, std::regex(R"([.\-])"), R"(\$&)");
-  return std::regex_search(msg, std::regex(b + R"((:[0-9]+: |: byte [0-9]+: |' pixel \([0-9]+, [0-9]+\)))"));
+  return std::regex_search(msg, std::regex(b + R"((:[0-9]+: |: byte [0-9]+: |' pixel \([0-9]+, [0-9]+\)|: (/[A-Za-z0-9_]+)+: ))"));
 }
 
 // Paths in messages, made independent of where the repository and build live.

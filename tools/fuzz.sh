@@ -11,12 +11,13 @@ seconds="${PT_FUZZ_SECONDS:-30}"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(scene_xml mesh_json mesh_obj image)
+[[ ${#targets[@]} -gt 0 ]] || targets=(scene_xml mesh_json mesh_obj mesh_gltf image)
 seeds_for() {  # extra seed folders: the malformed files of the target's formats
   case "$1" in
     scene_xml) echo tests/malformed/xml ;;
     mesh_json) echo tests/malformed/json ;;
     mesh_obj) echo tests/malformed/obj ;;
+    mesh_gltf) echo tests/malformed/gltf ;;
     image) echo tests/malformed/hdr tests/malformed/png tests/malformed/pfm ;;
   esac
 }

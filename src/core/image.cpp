@@ -105,9 +105,25 @@ bool read_image(const std::string& path, LoadedImage* out, std::string* error) {
     *error = "no such file, or it cannot be opened";
     return false;
   }
-  const auto* data = reinterpret_cast<const stbi_uc*>(bytes->data());
-  const int size = int(bytes->size());
+  return decode_image(*bytes, out, error);
+}
+
+bool decode_image(const std::string& bytes, LoadedImage* out, std::string* error) {
+  if (bytes.size() > size_t(1) << 30) {
+    *error = "the image file has more than 1 GiB";
+    return false;
+  }
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int size = int(bytes.size());
   int w = 0, h = 0, n = 0;
+  // The size is checked before stb_image allocates the pixels (a few bytes of header
+  // may promise gigabytes); the float copies below are 16 bytes a pixel, twice.
+  if (stbi_info_from_memory(data, size, &w, &h, &n) &&
+      (w <= 0 || h <= 0 || w > 16384 || h > 16384 || (long long)w * h > kMaxMapPixels)) {
+    *error = "unusable size " + std::to_string(w) + "x" + std::to_string(h) + " (at most " + std::to_string(kMaxMapPixels) +
+             " pixels, 16384 a side)";
+    return false;
+  }
   std::vector<float> top_down;
   // 8- and 16-bit files keep their integer code values (v / max) so that the caller
   // decides what they encode (sRGB colour or a unit vector); HDR files are linear floats.

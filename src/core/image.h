@@ -26,6 +26,9 @@ struct LoadedImage {
   std::vector<float> rgba;
 };
 bool read_image(const std::string& path, LoadedImage* out, std::string* error);
+bool decode_image(const std::string& bytes, LoadedImage* out, std::string* error);  // from memory
+// Image maps larger than this (16M pixels, 4096 x 4096) are refused before decoding.
+constexpr long long kMaxMapPixels = 1ll << 24;
 // Portable float map (little-endian RGB float32): lossless linear images, used for
 // benchmark references where RGBE's 8-bit mantissa would put a floor under the error.
 bool write_pfm(const std::string& path, int w, int h, const std::vector<float>& rgba);

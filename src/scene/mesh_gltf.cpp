@@ -1,15 +1,18 @@
 #include "scene/mesh_gltf.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
+#include <memory>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #define TINYGLTF_IMPLEMENTATION
-#define TINYGLTF_NO_STB_IMAGE        // images are decoded by our own loader, by uri
+#define TINYGLTF_NO_STB_IMAGE        // images are decoded by our own reader (keep_image)
 #define TINYGLTF_NO_STB_IMAGE_WRITE
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #if defined(__GNUC__)
@@ -25,28 +28,149 @@
 #endif
 
 #include "core/error.h"
+#include "core/file_io.h"
 
 namespace pt {
 namespace {
 
-bool keep_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// What the tinygltf callbacks need: the resolver for external files, and the first
+// problem one of them had (tinygltf's own message for it would not say which file).
+struct Context {
+  std::string path;  // the glTF file
+  const GltfResolver* resolve = nullptr;
+  const tinygltf::Model* model = nullptr;
+  std::string error;  // "where: what", set by a callback that refused
+};
+
+std::string pointer(const char* array, size_t index) { return std::string("/") + array + "/" + std::to_string(index); }
+
+// Buffers by URI: the path is relative to the glTF's folder and goes through the
+// resolver; tinygltf's own search (its base folder, then the working directory) is
+// bypassed by passing it no base folder and saying every file exists.
+bool file_exists(const std::string&, void*) { return true; }
+std::string expand_path(const std::string& p, void*) { return p; }
+bool write_file(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+// A file named by a URI (tinygltf has URL-decoded a buffer's; an image's is decoded
+// here), through the resolver; false with *why when refused or unreadable.
+bool read_referenced(const Context& c, const std::string& uri, const char* kind, std::string* out, std::string* why) {
+  const std::string rel = !uri.empty() && uri[0] == '/' ? uri : directory_of(c.path) + "/" + uri;
+  if (!c.resolve || !*c.resolve) {
+    *why = "file references are disabled for this glTF";
+    return false;
+  }
+  try {
+    const std::string file = (*c.resolve)(rel);
+    if (auto bytes = read_file(file)) {
+      *out = std::move(*bytes);
+      return true;
+    }
+    *why = std::string("cannot open the ") + kind + " file " + file;
+  } catch (const InputError& e) {
+    *why = e.what();
+  }
+  return false;
+}
+
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& uri, void* user) {
+  auto& c = *static_cast<Context*>(user);
+  // Buffers are parsed in order and appended when read: the one being read is the next.
+  const std::string where = pointer("buffers", c.model ? c.model->buffers.size() : 0);
+  std::string bytes, why;
+  if (read_referenced(c, uri, "buffer", &bytes, &why)) {
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  }
+  if (c.error.empty()) c.error = where + ": " + why;
+  *err = "refused";
+  return false;
+}
+
+// Images: their bytes are kept, undecoded (image.as_is), and decoded by our own image
+// reader when a material uses them. tinygltf 2.7 hands over an image's bufferView
+// without checking it against its buffer: that is checked here, before reading.
+bool keep_image(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int, const unsigned char* bytes,
+                int size, void* user) {
+  auto& c = *static_cast<Context*>(user);
+  if (image->bufferView >= 0) {
+    const tinygltf::Model& m = *c.model;
+    const auto& v = m.bufferViews[size_t(image->bufferView)];  // tinygltf checked both indices
+    const size_t have = m.buffers[size_t(v.buffer)].data.size();
+    if (v.byteOffset > have || v.byteLength > have - v.byteOffset) {
+      c.error = pointer("images", size_t(index)) + ": its bufferView runs past its buffer";
+      *err = "refused";
+      return false;
+    }
+  }
+  if (size < 0 || (size > 0 && !bytes)) return false;
+  image->image.assign(bytes, bytes + size);
+  image->as_is = true;
   return true;
+}
+
+// tinygltf 2.7 checks the BIN chunk's length without its 8-byte header, so a BIN chunk
+// claiming to reach the end of the file is read up to 8 bytes past it: the container is
+// checked here first, strictly, with the byte offset of what is wrong.
+void check_glb_structure(const std::string& b, const std::string& path) {
+  auto fail = [&](size_t at, const std::string& what) { throw InputError(path, 0, "byte " + std::to_string(at) + ": " + what); };
+  auto u32 = [&](size_t at) {
+    uint32_t v;
+    std::memcpy(&v, b.data() + at, 4);  // GLB is little-endian, as are our targets (x86-64, wasm)
+    return v;
+  };
+  if (b.size() < 20) fail(b.size(), "the file ends inside the GLB header (truncated)");
+  if (u32(4) != 2) fail(4, "GLB version " + std::to_string(u32(4)) + " (only version 2 is read)");
+  if (u32(8) != b.size())
+    fail(8, "the header says " + std::to_string(u32(8)) + " bytes, the file has " + std::to_string(b.size()) + " (truncated?)");
+  if (u32(16) != 0x4E4F534Au) fail(16, "the first chunk is not JSON");
+  const size_t json = u32(12);
+  if (json > b.size() - 20) fail(12, "the JSON chunk runs past the end of the file");
+  const size_t at = 20 + json;
+  if (at == b.size()) return;
+  if (b.size() - at < 8) fail(at, "the file ends inside a chunk header (truncated)");
+  if (u32(at + 4) != 0x004E4942u) fail(at + 4, "the second chunk is not BIN");
+  if (u32(at) > b.size() - at - 8) fail(at, "the BIN chunk runs past the end of the file");
+}
+
+// tinygltf turns extensions and extras into its own values recursively, one call per
+// level: nesting is bounded here so that a deep file cannot exhaust the stack.
+void check_json_depth(const char* s, size_t n, const std::function<void(size_t, const std::string&)>& fail) {
+  int depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < n; ++i) {
+    const char c = s[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > 64) fail(i, "JSON nested more than 64 deep");
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
 }
 
 class Reader {
  public:
   Reader(const std::string& path, const tinygltf::Model& m) : path_(path), m_(m) {}
 
-  [[noreturn]] void fail(const std::string& what) const { throw InputError(path_, 0, what); }
+  // `where` is a JSON pointer into the file ("/accessors/3"): glTF has no line numbers
+  // once parsed.
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const { throw InputError(path_, 0, where + ": " + what); }
 
   // An accessor's elements as floats (normalised integers mapped to [0, 1]), with every
   // offset and size checked against its buffer.
-  std::vector<float> floats(int index, int want_components, const char* what) const {
-    const tinygltf::Accessor& a = accessor(index, what);
+  std::vector<float> floats(int index, int want_components, const std::string& user) const {
+    const tinygltf::Accessor& a = accessor(index, user);
+    const std::string at = pointer("accessors", size_t(index));
     const int comps = tinygltf::GetNumComponentsInType(uint32_t(a.type));
-    if (comps != want_components) fail(std::string(what) + ": expected " + std::to_string(want_components) + " components");
+    if (comps != want_components) fail(at, "expected " + std::to_string(want_components) + " components (used by " + user + ")");
+    const unsigned char* base = checked(a, at);
     std::vector<float> out(a.count * size_t(comps));
-    read(a, what, [&](const unsigned char* p, size_t i) {
+    const size_t stride = stride_of(a);
+    for (size_t i = 0; i < a.count; ++i) {
+      const unsigned char* p = base + i * stride;
       for (int c = 0; c < comps; ++c) {
         float v = 0.0f;
         switch (a.componentType) {
@@ -58,20 +182,24 @@ class Reader {
             v = float(s) / 65535.0f;
             break;
           }
-          default: fail(std::string(what) + ": unsupported component type");
+          default: fail(at, "unsupported component type " + std::to_string(a.componentType) + " (used by " + user + ")");
         }
-        if (!std::isfinite(v)) fail(std::string(what) + ": element " + std::to_string(i) + " is not finite");
+        if (!std::isfinite(v)) fail(at, "element " + std::to_string(i) + " is not finite");
         out[i * size_t(comps) + size_t(c)] = v;
       }
-    });
+    }
     return out;
   }
 
-  std::vector<uint32_t> indices(int index) const {
-    const tinygltf::Accessor& a = accessor(index, "indices");
-    if (a.type != TINYGLTF_TYPE_SCALAR) fail("indices: not scalar");
+  std::vector<uint32_t> indices(int index, const std::string& user) const {
+    const tinygltf::Accessor& a = accessor(index, user);
+    const std::string at = pointer("accessors", size_t(index));
+    if (a.type != TINYGLTF_TYPE_SCALAR) fail(at, "indices must be scalars");
+    const unsigned char* base = checked(a, at);
     std::vector<uint32_t> out(a.count);
-    read(a, "indices", [&](const unsigned char* p, size_t i) {
+    const size_t stride = stride_of(a);
+    for (size_t i = 0; i < a.count; ++i) {
+      const unsigned char* p = base + i * stride;
       switch (a.componentType) {
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = p[0]; break;
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
@@ -81,39 +209,50 @@ class Reader {
           break;
         }
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: std::memcpy(&out[i], p, 4); break;
-        default: fail("indices: unsupported component type");
+        default: fail(at, "unsupported index component type " + std::to_string(a.componentType));
       }
-    });
+    }
     return out;
   }
 
  private:
-  const tinygltf::Accessor& accessor(int index, const char* what) const {
-    if (index < 0 || size_t(index) >= m_.accessors.size()) fail(std::string(what) + ": no such accessor");
+  const tinygltf::Accessor& accessor(int index, const std::string& user) const {
+    if (index < 0 || size_t(index) >= m_.accessors.size()) fail(user, "no accessor " + std::to_string(index));
     const tinygltf::Accessor& a = m_.accessors[size_t(index)];
-    if (a.sparse.isSparse) fail(std::string(what) + ": sparse accessors are not supported");
-    if (a.bufferView < 0 || size_t(a.bufferView) >= m_.bufferViews.size()) fail(std::string(what) + ": no buffer view");
+    const std::string at = pointer("accessors", size_t(index));
+    if (a.sparse.isSparse) fail(at, "sparse accessors are not supported");
+    if (a.bufferView < 0 || size_t(a.bufferView) >= m_.bufferViews.size()) fail(at, "no bufferView " + std::to_string(a.bufferView));
     return a;
   }
 
-  template <class F>
-  void read(const tinygltf::Accessor& a, const char* what, F&& element) const {
-    const tinygltf::BufferView& v = m_.bufferViews[size_t(a.bufferView)];
-    if (v.buffer < 0 || size_t(v.buffer) >= m_.buffers.size()) fail(std::string(what) + ": no buffer");
-    const std::vector<unsigned char>& b = m_.buffers[size_t(v.buffer)].data;
+  size_t elem_of(const tinygltf::Accessor& a, const std::string& at) const {
     const int comp_size = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
     const int comps = tinygltf::GetNumComponentsInType(uint32_t(a.type));
-    if (comp_size <= 0 || comps <= 0) fail(std::string(what) + ": bad accessor type");
-    const size_t elem = size_t(comp_size) * size_t(comps);
-    const size_t stride = v.byteStride ? v.byteStride : elem;
-    const size_t start = v.byteOffset + a.byteOffset;
-    if (a.count == 0) return;
-    // Overflow-safe: the last element must end inside the view and the view inside the buffer.
-    if (v.byteOffset > b.size() || v.byteLength > b.size() - v.byteOffset || stride < elem || a.byteOffset > v.byteLength ||
-        (a.count - 1) > (v.byteLength - a.byteOffset - std::min(elem, v.byteLength - a.byteOffset)) / stride ||
-        elem > v.byteLength - a.byteOffset)
-      fail(std::string(what) + ": accessor runs past its buffer");
-    for (size_t i = 0; i < a.count; ++i) element(b.data() + start + i * stride, i);
+    if (comp_size <= 0 || comps <= 0) fail(at, "bad componentType or type");
+    return size_t(comp_size) * size_t(comps);
+  }
+  size_t stride_of(const tinygltf::Accessor& a) const {
+    const tinygltf::BufferView& v = m_.bufferViews[size_t(a.bufferView)];
+    return v.byteStride ? v.byteStride : size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType))) *
+                                              size_t(tinygltf::GetNumComponentsInType(uint32_t(a.type)));
+  }
+
+  // The first element's address, once every element is known to lie inside the view and
+  // the view inside its buffer (overflow-safe: nothing is allocated before this).
+  const unsigned char* checked(const tinygltf::Accessor& a, const std::string& at) const {
+    const tinygltf::BufferView& v = m_.bufferViews[size_t(a.bufferView)];
+    if (v.buffer < 0 || size_t(v.buffer) >= m_.buffers.size()) fail(pointer("bufferViews", size_t(a.bufferView)), "no buffer " + std::to_string(v.buffer));
+    const std::vector<unsigned char>& b = m_.buffers[size_t(v.buffer)].data;
+    const size_t elem = elem_of(a, at);
+    const size_t stride = stride_of(a);
+    if (v.byteOffset > b.size() || v.byteLength > b.size() - v.byteOffset)
+      fail(pointer("bufferViews", size_t(a.bufferView)), "runs past its buffer (" + std::to_string(b.size()) + " bytes)");
+    if (stride < elem) fail(at, "elements overlap (byteStride " + std::to_string(stride) + " < " + std::to_string(elem) + ")");
+    if (a.count == 0) return nullptr;
+    if (a.byteOffset > v.byteLength || elem > v.byteLength - a.byteOffset ||
+        (a.count - 1) > (v.byteLength - a.byteOffset - elem) / stride)
+      fail(at, std::to_string(a.count) + " elements run past the end of bufferView " + std::to_string(a.bufferView));
+    return b.data() + v.byteOffset + a.byteOffset;
   }
 
   std::string path_;
@@ -134,113 +273,259 @@ glm::mat4 node_matrix(const tinygltf::Node& n) {
   return m;
 }
 
-GltfMaterial material_of(const tinygltf::Model& model, int index) {
-  GltfMaterial g;
-  if (index < 0 || size_t(index) >= model.materials.size()) return g;
-  const tinygltf::Material& m = model.materials[size_t(index)];
-  const auto& pbr = m.pbrMetallicRoughness;
-  if (pbr.baseColorFactor.size() >= 3) g.base_color = glm::vec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]);
-  g.metallic = float(pbr.metallicFactor);
-  g.roughness = float(pbr.roughnessFactor);
-  if (m.emissiveFactor.size() == 3) g.emissive = glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
-  if (auto t = m.extensions.find("KHR_materials_transmission"); t != m.extensions.end() && t->second.Has("transmissionFactor"))
-    g.transmission = float(t->second.Get("transmissionFactor").GetNumberAsDouble());
-  if (auto t = m.extensions.find("KHR_materials_ior"); t != m.extensions.end() && t->second.Has("ior"))
-    g.ior = float(t->second.Get("ior").GetNumberAsDouble());
-  return g;
+// Materials, with their image maps decoded once per image (only those a part uses).
+// Factors outside their ranges would make a material that creates energy or a NaN in
+// the shader: refused, with the material's pointer.
+class Materials {
+ public:
+  Materials(const Reader& r, const tinygltf::Model& m, const Context& c) : r_(r), m_(m), c_(c) {}
+
+  const GltfMaterial& get(int index, const std::string& user) {
+    static const GltfMaterial kDefault;
+    if (index < 0) return kDefault;
+    if (size_t(index) >= m_.materials.size()) r_.fail(user, "no material " + std::to_string(index));
+    auto& slot = materials_[index];
+    if (!slot) slot = std::make_unique<GltfMaterial>(read(index));
+    return *slot;
+  }
+
+ private:
+  GltfMaterial read(int index) {
+    GltfMaterial g;
+    const std::string at = pointer("materials", size_t(index));
+    const tinygltf::Material& m = m_.materials[size_t(index)];
+    const auto& pbr = m.pbrMetallicRoughness;
+    auto unit = [&](double v, const char* what) {
+      if (!(v >= 0.0 && v <= 1.0)) r_.fail(at, std::string(what) + " must be in [0, 1]");
+      return float(v);
+    };
+    if (pbr.baseColorFactor.size() >= 3)
+      g.base_color = glm::vec3(unit(pbr.baseColorFactor[0], "baseColorFactor"), unit(pbr.baseColorFactor[1], "baseColorFactor"),
+                               unit(pbr.baseColorFactor[2], "baseColorFactor"));
+    g.metallic = unit(pbr.metallicFactor, "metallicFactor");
+    g.roughness = unit(pbr.roughnessFactor, "roughnessFactor");
+    if (m.emissiveFactor.size() == 3) {
+      g.emissive = glm::vec3(unit(m.emissiveFactor[0], "emissiveFactor"), unit(m.emissiveFactor[1], "emissiveFactor"),
+                             unit(m.emissiveFactor[2], "emissiveFactor"));
+      if (auto t = m.extensions.find("KHR_materials_emissive_strength"); t != m.extensions.end() && t->second.Has("emissiveStrength")) {
+        const double k = t->second.Get("emissiveStrength").GetNumberAsDouble();
+        if (!(k >= 0.0 && k <= 1e6)) r_.fail(at, "emissiveStrength must be in [0, 1e6]");
+        g.emissive *= float(k);
+      }
+    }
+    if (auto t = m.extensions.find("KHR_materials_transmission"); t != m.extensions.end() && t->second.Has("transmissionFactor"))
+      g.transmission = unit(t->second.Get("transmissionFactor").GetNumberAsDouble(), "transmissionFactor");
+    if (auto t = m.extensions.find("KHR_materials_ior"); t != m.extensions.end() && t->second.Has("ior")) {
+      const double ior = t->second.Get("ior").GetNumberAsDouble();
+      if (!(ior >= 1.0 && ior <= 10.0)) r_.fail(at, "ior must be in [1, 10]");
+      g.ior = float(ior);
+    }
+    g.base_color_map = map(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, at + "/pbrMetallicRoughness/baseColorTexture");
+    g.metallic_roughness_map = map(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                   at + "/pbrMetallicRoughness/metallicRoughnessTexture");
+    g.normal_map = map(m.normalTexture.index, m.normalTexture.texCoord, at + "/normalTexture");
+    return g;
+  }
+
+  std::shared_ptr<const GltfImage> map(int texture, int tex_coord, const std::string& at) {
+    if (texture < 0) return nullptr;
+    if (tex_coord != 0) r_.fail(at, "texCoord " + std::to_string(tex_coord) + " is not supported (only TEXCOORD_0)");
+    if (size_t(texture) >= m_.textures.size()) r_.fail(at, "no texture " + std::to_string(texture));
+    const int source = m_.textures[size_t(texture)].source;
+    if (source < 0) r_.fail(pointer("textures", size_t(texture)), "no source (images of formats given by extensions are not read)");
+    if (size_t(source) >= m_.images.size()) r_.fail(pointer("textures", size_t(texture)), "no image " + std::to_string(source));
+    auto& slot = images_[source];
+    if (slot) return slot;
+    const std::string where = pointer("images", size_t(source));
+    const tinygltf::Image& img = m_.images[size_t(source)];
+    std::string bytes, why;
+    if (img.as_is) {
+      bytes.assign(img.image.begin(), img.image.end());  // embedded: a data: URI or a bufferView
+    } else if (img.uri.empty()) {
+      r_.fail(where, "no image data");
+    } else if (!read_referenced(c_, tinygltf::dlib::urldecode(img.uri), "image", &bytes, &why)) {
+      r_.fail(where, why);
+    }
+    auto out = std::make_shared<GltfImage>();
+    out->name = c_.path + "#" + where;
+    if (!decode_image(bytes, &out->image, &why)) r_.fail(where, why);
+    slot = out;
+    return slot;
+  }
+
+  const Reader& r_;
+  const tinygltf::Model& m_;
+  const Context& c_;
+  std::map<int, std::unique_ptr<GltfMaterial>> materials_;
+  std::map<int, std::shared_ptr<const GltfImage>> images_;
+};
+
+const char* mode_name(int mode) {
+  switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "points";
+    case TINYGLTF_MODE_LINE: return "lines";
+    case TINYGLTF_MODE_LINE_LOOP: return "line loop";
+    case TINYGLTF_MODE_LINE_STRIP: return "line strip";
+    case TINYGLTF_MODE_TRIANGLE_STRIP: return "triangle strip";
+    case TINYGLTF_MODE_TRIANGLE_FAN: return "triangle fan";
+    default: return "unknown";
+  }
+}
+
+// tinygltf's messages end in newlines and may hold several lines; a JSON syntax error
+// ("parse error at line L, column C") becomes "file:L:" (.gltf) or "file: byte N:" (.glb).
+[[noreturn]] void fail_parse(std::string err, const std::string& path, const char* json, size_t json_size, size_t json_at) {
+  for (char& c : err)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!err.empty() && err.back() == ' ') err.pop_back();
+  if (err.empty()) err = "cannot read the glTF file";
+  const size_t p = err.find("parse error at line ");
+  int line = 0, column = 0, used = 0;
+  if (p != std::string::npos && std::sscanf(err.c_str() + p, "parse error at line %d, column %d: %n", &line, &column, &used) == 2 &&
+      used > 0 && line > 0) {
+    const std::string what = "malformed JSON: " + err.substr(p + size_t(used));
+    if (json_at == 0) throw InputError(path, line, what);
+    size_t at = 0;  // the byte of (line, column) in the chunk
+    for (int l = 1; l < line && at < json_size; ++at)
+      if (json[at] == '\n') ++l;
+    throw InputError(path, 0, "byte " + std::to_string(json_at + std::min(json_size, at + size_t(std::max(column, 1) - 1))) + ": " + what);
+  }
+  throw InputError(path, 0, err);
 }
 
 }  // namespace
 
-std::vector<GltfPart> load_gltf(const std::string& path) {
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&keep_image, nullptr);
+std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve) {
+  const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+  if (binary) check_glb_structure(bytes, path);
+  const size_t json_at = binary ? 20 : 0;
+  const size_t json_size = binary ? size_t(uint32_t(bytes[12] & 0xff) | uint32_t(bytes[13] & 0xff) << 8 |
+                                           uint32_t(bytes[14] & 0xff) << 16 | uint32_t(bytes[15] & 0xff) << 24)
+                                  : bytes.size();
+  const char* json = bytes.data() + json_at;
+  check_json_depth(json, json_size, [&](size_t at, const std::string& what) {
+    if (binary) throw InputError(path, 0, "byte " + std::to_string(json_at + at) + ": " + what);
+    throw InputError(path, 1 + int(std::count(json, json + at, '\n')), what);
+  });
+  if (bytes.size() > size_t(1) << 30) throw InputError(path, 0, "the file has more than 1 GiB");
   tinygltf::Model model;
+  Context ctx;
+  ctx.path = path;
+  ctx.resolve = &resolve;
+  ctx.model = &model;
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&keep_image, &ctx);
+  loader.SetFsCallbacks({&file_exists, &expand_path, &read_whole_file, &write_file, &ctx});
   std::string err, warn;
-  const bool binary = path.size() > 4 && (path.compare(path.size() - 4, 4, ".glb") == 0 || path.compare(path.size() - 4, 4, ".GLB") == 0);
-  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path) : loader.LoadASCIIFromFile(&model, &err, &warn, path);
-  if (!ok) {
-    while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
-    throw InputError(path, 0, err.empty() ? "cannot read the glTF file" : err);
-  }
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                        unsigned(bytes.size()), "")
+                         : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), "");
+  if (!ctx.error.empty()) throw InputError(path, 0, ctx.error);
+  if (!ok) fail_parse(err, path, json, json_size, json_at);
   const Reader r(path, model);
+  Materials materials(r, model, ctx);
   // Keyed by the accessors a primitive reads: primitives (or meshes) that differ only in
   // material share one MeshData.
   std::map<std::vector<int>, std::shared_ptr<const MeshData>> cache;
   auto primitive = [&](int mesh, int prim) -> std::shared_ptr<const MeshData> {
     const tinygltf::Primitive& p = model.meshes[size_t(mesh)].primitives[size_t(prim)];
-    std::vector<int> key{p.mode, p.indices};
+    const std::string at = pointer("meshes", size_t(mesh)) + pointer("primitives", size_t(prim));
+    // Points and lines have no area to render, strips and fans are not read: refused
+    // rather than dropped, so that no part of a model goes missing silently.
+    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES)
+      r.fail(at, "mode " + std::to_string(p.mode) + " (" + mode_name(p.mode) + ") is not supported: only triangles (mode 4)");
+    std::vector<int> key{p.indices};
     for (const char* a : {"POSITION", "NORMAL", "TEXCOORD_0"}) {
       const auto it = p.attributes.find(a);
       key.push_back(it == p.attributes.end() ? -1 : it->second);
     }
     auto& slot = cache[key];
     if (slot) return slot;
-    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) return nullptr;  // points and lines: nothing to render
     auto d = std::make_shared<MeshData>();
     const auto pos = p.attributes.find("POSITION");
-    if (pos == p.attributes.end()) r.fail("mesh " + std::to_string(mesh) + ": a primitive has no POSITION");
-    const std::vector<float> v = r.floats(pos->second, 3, "POSITION");
+    if (pos == p.attributes.end()) r.fail(at, "no POSITION attribute");
+    const std::vector<float> v = r.floats(pos->second, 3, at + "/attributes/POSITION");
     for (size_t i = 0; i + 2 < v.size(); i += 3) d->positions.emplace_back(v[i], v[i + 1], v[i + 2]);
     if (auto n = p.attributes.find("NORMAL"); n != p.attributes.end()) {
-      const std::vector<float> f = r.floats(n->second, 3, "NORMAL");
-      if (f.size() != v.size()) r.fail("NORMAL and POSITION counts differ");
+      const std::vector<float> f = r.floats(n->second, 3, at + "/attributes/NORMAL");
+      if (f.size() != v.size()) r.fail(at, "NORMAL and POSITION counts differ");
       for (size_t i = 0; i + 2 < f.size(); i += 3) d->normals.emplace_back(f[i], f[i + 1], f[i + 2]);
     }
     if (auto t = p.attributes.find("TEXCOORD_0"); t != p.attributes.end()) {
-      const std::vector<float> f = r.floats(t->second, 2, "TEXCOORD_0");
-      if (f.size() / 2 != d->positions.size()) r.fail("TEXCOORD_0 and POSITION counts differ");
-      for (size_t i = 0; i + 1 < f.size(); i += 2) d->uvs.emplace_back(f[i], f[i + 1]);
+      const std::vector<float> f = r.floats(t->second, 2, at + "/attributes/TEXCOORD_0");
+      if (f.size() / 2 != d->positions.size()) r.fail(at, "TEXCOORD_0 and POSITION counts differ");
+      // glTF's v runs down from the image's top row, ours up from its bottom row.
+      for (size_t i = 0; i + 1 < f.size(); i += 2) d->uvs.emplace_back(f[i], 1.0f - f[i + 1]);
     }
     std::vector<uint32_t> idx;
     if (p.indices >= 0) {
-      idx = r.indices(p.indices);
+      idx = r.indices(p.indices, at + "/indices");
     } else {
       idx.resize(d->positions.size());
       for (size_t i = 0; i < idx.size(); ++i) idx[i] = uint32_t(i);
     }
+    if (idx.size() % 3 != 0) r.fail(at, std::to_string(idx.size()) + " indices are not whole triangles");
     for (size_t i = 0; i + 2 < idx.size(); i += 3) {
       for (int k = 0; k < 3; ++k)
-        if (idx[i + size_t(k)] >= d->positions.size()) r.fail("index " + std::to_string(idx[i + size_t(k)]) + " out of range");
+        if (idx[i + size_t(k)] >= d->positions.size())
+          r.fail(p.indices >= 0 ? pointer("accessors", size_t(p.indices)) : at,
+                 "index " + std::to_string(idx[i + size_t(k)]) + " is not a vertex (there are " + std::to_string(d->positions.size()) + ")");
       d->triangles.emplace_back(idx[i], idx[i + 1], idx[i + 2]);
     }
     slot = d;
     return slot;
   };
   std::vector<GltfPart> parts;
-  // Depth-first over the node tree; the depth bound also stops cycles in a malformed file.
+  // Depth-first over the node tree. glTF requires a tree (no node has two parents), so a
+  // node reached twice is an error: that stops cycles and exponential fan-outs alike.
   struct Item {
     int node;
     glm::mat4 parent;
-    int depth;
+    std::string from;
   };
   std::vector<Item> todo;
+  std::vector<bool> seen(model.nodes.size(), false);
   const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
   if (!model.scenes.empty()) {
-    if (size_t(scene) >= model.scenes.size()) r.fail("no such default scene");
-    for (int n : model.scenes[size_t(scene)].nodes) todo.push_back({n, glm::mat4(1.0f), 0});
+    if (size_t(scene) >= model.scenes.size()) r.fail("/scene", "no scene " + std::to_string(scene));
+    for (int n : model.scenes[size_t(scene)].nodes) todo.push_back({n, glm::mat4(1.0f), pointer("scenes", size_t(scene))});
   } else {
-    for (size_t n = 0; n < model.nodes.size(); ++n) todo.push_back({int(n), glm::mat4(1.0f), 0});
+    for (size_t n = 0; n < model.nodes.size(); ++n) todo.push_back({int(n), glm::mat4(1.0f), "/nodes"});
   }
   while (!todo.empty()) {
     const Item it = todo.back();
     todo.pop_back();
-    if (it.node < 0 || size_t(it.node) >= model.nodes.size()) r.fail("no such node " + std::to_string(it.node));
-    if (it.depth > 64) r.fail("the node tree is deeper than 64 (a cycle?)");
+    if (it.node < 0 || size_t(it.node) >= model.nodes.size()) r.fail(it.from, "no node " + std::to_string(it.node));
+    const std::string at = pointer("nodes", size_t(it.node));
+    if (seen[size_t(it.node)]) r.fail(at, "reached twice (the node hierarchy must be a tree)");
+    seen[size_t(it.node)] = true;
     const tinygltf::Node& n = model.nodes[size_t(it.node)];
     const glm::mat4 world = it.parent * node_matrix(n);
+    for (int c = 0; c < 4; ++c)
+      for (int k = 0; k < 4; ++k)
+        if (!(std::abs(world[c][k]) <= 1e9f)) r.fail(at, "its transform is not finite or is absurdly large (> 1e9)");
     if (n.mesh >= 0) {
-      if (size_t(n.mesh) >= model.meshes.size()) r.fail("node " + std::to_string(it.node) + ": no such mesh");
+      if (size_t(n.mesh) >= model.meshes.size()) r.fail(at, "no mesh " + std::to_string(n.mesh));
       const tinygltf::Mesh& mesh = model.meshes[size_t(n.mesh)];
       for (size_t p = 0; p < mesh.primitives.size(); ++p) {
         std::shared_ptr<const MeshData> d = primitive(n.mesh, int(p));
-        if (d && !d->triangles.empty()) parts.push_back({d, world, material_of(model, mesh.primitives[p].material)});
+        const std::string pat = pointer("meshes", size_t(n.mesh)) + pointer("primitives", p);
+        const GltfMaterial& mat = materials.get(mesh.primitives[p].material, pat + "/material");
+        if ((mat.base_color_map || mat.metallic_roughness_map || mat.normal_map) && d->uvs.empty())
+          r.fail(pat, "its material has image maps, but it has no TEXCOORD_0");
+        if (!d->triangles.empty()) parts.push_back({d, world, mat});
       }
     }
-    for (int c : n.children) todo.push_back({c, world, it.depth + 1});
+    for (int c : n.children) todo.push_back({c, world, at + "/children"});
   }
-  if (parts.empty()) r.fail("no triangles in the default scene");
+  if (parts.empty()) throw InputError(path, 0, "no triangles in the default scene");
   return parts;
+}
+
+std::vector<GltfPart> load_gltf(const std::string& path, const GltfResolver& resolve) {
+  const auto bytes = read_file(path);
+  if (!bytes) throw InputError(path, 0, "cannot open the mesh file");
+  return parse_gltf(*bytes, path, resolve);
 }
 
 }  // namespace pt

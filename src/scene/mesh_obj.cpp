@@ -3,6 +3,8 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdlib>
+#include <map>
+#include <tuple>
 #include <vector>
 
 #define TINYOBJLOADER_IMPLEMENTATION
@@ -80,10 +82,12 @@ class ObjChecker {
     }
   }
 
-  // One "v", "v/t", "v//n" or "v/t/n" corner of a face.
-  void corner(const std::string& c) {
+  // One "v", "v/t", "v//n" or "v/t/n" corner of a face; returns which of texture
+  // coordinate (1) and normal (2) it gives.
+  int corner(const std::string& c) {
     long counts[3] = {v_, vt_, vn_};
     const char* names[3] = {"vertex", "texture coordinate", "normal"};
+    int given = 0;
     size_t start = 0;
     for (int k = 0; k < 3; ++k) {
       const size_t slash = c.find('/', start);
@@ -97,13 +101,15 @@ class ObjChecker {
         if (x == 0 || x > counts[k] || x < -counts[k])
           fail("face corner '" + c + "' refers to " + names[k] + " " + std::to_string(x) + ", but " + std::to_string(counts[k]) +
                " are defined before it");
+        if (k > 0) given |= k;
       }
       if (slash == std::string::npos) {
-        return;
+        return given;
       }
       if (k == 2) fail("face corner '" + c + "' has more than three indices");
       start = slash + 1;
     }
+    return given;
   }
 
   void statement(const std::vector<std::string>& t) {
@@ -117,10 +123,19 @@ class ObjChecker {
       ++vt_;
     } else if (k == "vn") {
       numbers(t, 3, 3);
+      // A normal of zero length has no direction to shade with: refused rather than
+      // replaced by a guess (the exporter that wrote it lost the surface's orientation).
+      if (std::strtod(t[1].c_str(), nullptr) == 0.0 && std::strtod(t[2].c_str(), nullptr) == 0.0 &&
+          std::strtod(t[3].c_str(), nullptr) == 0.0)
+        fail("'vn' has zero length");
       ++vn_;
     } else if (k == "f") {
       if (t.size() < 4) fail("a face needs at least 3 corners");
-      for (size_t c = 1; c < t.size(); ++c) corner(t[c]);
+      // A face's corners all give texture coordinates and normals, or none do: half a
+      // face with shading normals would blend them with zeros.
+      const int first = corner(t[1]);
+      for (size_t c = 2; c < t.size(); ++c)
+        if (corner(t[c]) != first) fail("face corners '" + t[1] + "' and '" + t[c] + "' differ in giving a texture coordinate or normal");
       ++faces_;
     } else if (k == "o" || k == "g" || k == "s" || k == "usemtl" || k == "mtllib") {
       // names, smoothing groups and materials do not change the geometry we use
@@ -149,23 +164,59 @@ MeshData parse_mesh_obj(const std::string& text, const std::string& path) {
     throw InputError(path, 0, why.empty() ? "cannot read the OBJ file" : why);
   }
   const tinyobj::attrib_t& a = reader.GetAttrib();
-  MeshData m;
+  std::vector<glm::vec3> positions;
   for (size_t i = 0; i + 2 < a.vertices.size(); i += 3) {
     const glm::vec3 p(a.vertices[i], a.vertices[i + 1], a.vertices[i + 2]);
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw InputError(path, 0, "vertex " + std::to_string(i / 3 + 1) + " is not finite");
-    m.positions.push_back(p);
+    positions.push_back(p);
   }
+  bool has_normals = false, has_uvs = false;
+  for (const tinyobj::shape_t& shape : reader.GetShapes())
+    for (const tinyobj::index_t& c : shape.mesh.indices) {
+      has_normals |= c.normal_index >= 0;
+      has_uvs |= c.texcoord_index >= 0;
+    }
+  // OBJ indexes positions, texture coordinates and normals separately; MeshData has one
+  // index per vertex, so each distinct (v, vt, vn) triple becomes one vertex. Corners of
+  // faces without vt or vn (where other faces have them) get uv 0 and a zero normal,
+  // which the packer leaves out: those triangles shade with their geometric normal.
+  MeshData m;
+  std::map<std::tuple<int, int, int>, unsigned> vertex_of;
+  auto vertex = [&](const tinyobj::index_t& c, size_t face) -> unsigned {
+    if (c.vertex_index < 0 || size_t(c.vertex_index) >= positions.size())
+      throw InputError(path, 0, "face " + std::to_string(face + 1) + " refers to a missing vertex");
+    const auto key = std::make_tuple(c.vertex_index, c.texcoord_index, c.normal_index);
+    const auto found = vertex_of.find(key);
+    if (found != vertex_of.end()) return found->second;
+    const unsigned k = unsigned(m.positions.size());
+    vertex_of.emplace(key, k);
+    m.positions.push_back(positions[size_t(c.vertex_index)]);
+    if (has_normals) {
+      glm::vec3 n(0.0f);
+      if (c.normal_index >= 0) {
+        if (3 * size_t(c.normal_index) + 2 >= a.normals.size())
+          throw InputError(path, 0, "face " + std::to_string(face + 1) + " refers to a missing normal");
+        n = glm::vec3(a.normals[3 * size_t(c.normal_index)], a.normals[3 * size_t(c.normal_index) + 1], a.normals[3 * size_t(c.normal_index) + 2]);
+      }
+      m.normals.push_back(n);
+    }
+    if (has_uvs) {
+      glm::vec2 t(0.0f);
+      if (c.texcoord_index >= 0) {
+        if (2 * size_t(c.texcoord_index) + 1 >= a.texcoords.size())
+          throw InputError(path, 0, "face " + std::to_string(face + 1) + " refers to a missing texture coordinate");
+        t = glm::vec2(a.texcoords[2 * size_t(c.texcoord_index)], a.texcoords[2 * size_t(c.texcoord_index) + 1]);
+      }
+      m.uvs.push_back(t);
+    }
+    return k;
+  };
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     const auto& idx = shape.mesh.indices;
     for (size_t f = 0; f + 2 < idx.size(); f += 3) {
       glm::uvec3 tri;
-      for (int k = 0; k < 3; ++k) {
-        const int v = idx[f + size_t(k)].vertex_index;
-        if (v < 0 || size_t(v) >= m.positions.size())
-          throw InputError(path, 0, "face " + std::to_string(f / 3 + 1) + " refers to a missing vertex");
-        tri[k] = unsigned(v);
-      }
+      for (int k = 0; k < 3; ++k) tri[k] = vertex(idx[f + size_t(k)], f / 3);  // in order: vertices number as first used
       m.triangles.push_back(tri);
     }
   }

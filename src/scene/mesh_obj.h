@@ -1,5 +1,6 @@
 // Wavefront OBJ meshes, read with tinyobjloader (Debian's libtinyobjloader-dev, used
-// header-only): positions, triangulated faces; vertex normals and uv when present.
+// header-only): positions, triangulated faces, and vertex normals (vn) and texture
+// coordinates (vt) when the faces give them.
 #pragma once
 #include <string>
 

@@ -1,6 +1,7 @@
 #include "scene/textured_loader.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/file_io.h"
 
@@ -44,17 +45,27 @@ int load_map(XmlAttrs& a, Scene& scene, const char* attr, bool normal, const Pat
   LoadedImage img;
   std::string why;
   if (!read_image(path, &img, &why)) a.fail("cannot read '" + given + "': " + why);
+  return add_image_map(scene, path, img, normal, a.line(), [&](const std::string& what) { a.fail("'" + given + "' " + what); });
+}
+
+}  // namespace
+
+int add_image_map(Scene& scene, const std::string& name, const LoadedImage& img, bool normal, int line,
+                  const std::function<void(const std::string&)>& fail) {
+  for (size_t i = 0; i < scene.images.size(); ++i)
+    if (scene.images[i]->path == name && scene.images[i]->normal == normal) return int(i);
   auto m = std::make_shared<ImageMap>(decode_image_map(img, normal));
-  m->path = path;
-  m->line = a.line();
+  m->path = name;
+  m->line = line;
   for (float v : m->rgba)
-    if (!std::isfinite(v) || (!normal && (v < 0.0f || v > 1.0f)))
-      a.fail("'" + given + "' has values outside [0, 1]: a reflectance map cannot add energy");
+    if (!std::isfinite(v) || (!normal && (v < 0.0f || v > 1.0f))) {
+      fail("has values outside [0, 1]: a reflectance map cannot add energy");
+      throw std::logic_error("add_image_map: fail returned");
+    }
   scene.images.push_back(std::move(m));
   return int(scene.images.size()) - 1;
 }
 
-}  // namespace
 
 void parse_textured_attrs(XmlAttrs& a, Scene& scene, Material& m, const PathResolver& resolve) {
   m.diffuse_map = load_map(a, scene, "diffuse", false, resolve);

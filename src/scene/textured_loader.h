@@ -2,7 +2,6 @@
 #pragma once
 #include <functional>
 #include <string>
-#include <string>
 
 #include "core/image.h"
 #include "scene/scene.h"
@@ -23,5 +22,9 @@ void parse_textured_attrs(XmlAttrs& a, Scene& scene, Material& m, const PathReso
 // [-1, 1] so that the middle code (128 of 255, 32768 of 65535, 0.5 in a float file) is 0.
 float srgb_to_linear(float v);
 ImageMap decode_image_map(const LoadedImage& img, bool normal);
+// Decodes `img` into scene.images once per (name, normal); a colour map with values
+// outside [0, 1] calls `fail` (which throws).
+int add_image_map(Scene& scene, const std::string& name, const LoadedImage& img, bool normal, int line,
+                  const std::function<void(const std::string&)>& fail);
 
 }  // namespace pt

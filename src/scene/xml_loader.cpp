@@ -266,10 +266,14 @@ struct Loader {
     return int(scene.meshes.size()) - 1;
   }
 
-  int gltf_material(const GltfMaterial& g, int line) {
+  // A glTF material as ours (docs/scene-format.md, "glTF materials"): emission, then
+  // transmission, then a metal without a metallic-roughness map, then image maps as
+  // <Textured>, else <Diffuse> of the base colour.
+  int gltf_material(const GltfMaterial& g, XmlAttrs& a) {
     Material m;
-    m.line = line;
+    m.line = a.line();
     m.tint = g.base_color;
+    const bool maps = g.base_color_map || g.metallic_roughness_map || g.normal_map;
     if (g.emissive != glm::vec3(0.0f)) {
       m.kind = MaterialKind::Emit;
       m.emission = g.emissive;
@@ -277,10 +281,27 @@ struct Loader {
       m.kind = MaterialKind::SmoothDielectric;
       m.ior = glm::vec2(g.ior, 0.0f);
       m.inner_ior = g.ior;
-    } else if (g.metallic >= 0.5f) {
+    } else if (g.metallic >= 0.5f && !g.metallic_roughness_map) {
       m.kind = MaterialKind::Metal;  // a bright conductor tinted by the base colour
       m.ior = glm::vec2(0.15f, 3.6f);
       m.glossiness = glm::clamp(g.roughness, 0.0f, 1.0f);  // GGX alpha = roughness^2, as glTF
+    } else if (maps) {
+      m.kind = MaterialKind::Textured;
+      auto add = [&](const GltfImage& img, const std::string& name, const LoadedImage& pixels, bool normal) {
+        return add_image_map(scene, name, pixels, normal, a.line(), [&](const std::string& what) { a.fail("'" + img.name + "' " + what); });
+      };
+      if (g.base_color_map) m.diffuse_map = add(*g.base_color_map, g.base_color_map->name, g.base_color_map->image, false);
+      if (g.normal_map) m.normal_map = add(*g.normal_map, g.normal_map->name, g.normal_map->image, true);
+      if (g.metallic_roughness_map) {
+        // The Phong lobe's weight s is the metalness (blue, linear) times metallicFactor, grey;
+        // the lobe's exponent comes from roughnessFactor (n = 2 / alpha^2 - 2, alpha = roughness^2).
+        LoadedImage s = g.metallic_roughness_map->image;
+        for (size_t i = 0; i < s.rgba.size(); i += 4) s.rgba[i] = s.rgba[i + 1] = s.rgba[i + 2] = s.rgba[i + 2] * g.metallic;
+        s.bits = 0;
+        m.specular_map = add(*g.metallic_roughness_map, g.metallic_roughness_map->name + "#metalness*" + std::to_string(g.metallic), s, false);
+      }
+      const float alpha = g.roughness * g.roughness;
+      m.exponent = alpha > 0.0f ? glm::clamp(2.0f / (alpha * alpha) - 2.0f, 1.0f, 1e5f) : 1e5f;
     }
     scene.materials.push_back(m);
     return int(scene.materials.size()) - 1;
@@ -327,7 +348,11 @@ struct Loader {
         if (generated) {
           parts.push_back({std::make_shared<const MeshData>(generate_icosphere(level, displace)), glm::mat4(1.0f), {}});
         } else if (gltf) {
-          parts = load_gltf(src);
+          // The glTF's own buffer and image files are dependencies too (watch reloads on their change).
+          parts = load_gltf(src, [this](const std::string& p) {
+            scene.files.push_back(p);
+            return p;
+          });
         } else {
           parts.push_back({std::make_shared<const MeshData>(ends(".obj") ? load_mesh_obj(src) : load_mesh_json(src)), glm::mat4(1.0f), {}});
         }
@@ -344,13 +369,13 @@ struct Loader {
     for (const GltfPart& part : parts) {
       const glm::mat4 world = place * part.transform;
       for (const glm::vec3& v : part.mesh->positions)
-        if (glm::any(glm::greaterThan(glm::abs(glm::vec3(world * glm::vec4(v, 1.0f))), glm::vec3(kMaxMagnitude))))
+        if (!glm::all(glm::lessThanEqual(glm::abs(glm::vec3(world * glm::vec4(v, 1.0f))), glm::vec3(kMaxMagnitude))))  // NaN too
           a.fail("scaled and moved, the mesh has a vertex beyond 1e9");
       Shape s;
       s.kind = ShapeKind::Mesh;
       s.mesh = mesh_index(part.mesh);
       s.transform = place * part.transform;
-      s.material = shared_material >= 0 ? shared_material : gltf_material(part.material, e->GetLineNum());
+      s.material = shared_material >= 0 ? shared_material : gltf_material(part.material, a);
       s.line = e->GetLineNum();
       scene.shapes.push_back(s);
     }

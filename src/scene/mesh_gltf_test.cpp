@@ -1,0 +1,134 @@
+// glTF from memory (the fuzzer's entry point): .glb and .gltf told apart by the magic and
+// giving the same mesh; files named by URI go through the resolver only (refused without
+// one, recorded as the scene's dependencies with one).
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "scene/mesh_gltf.h"
+#include "scene/xml_loader.h"
+#include "test_paths.h"
+
+using namespace pt;
+
+namespace {
+
+std::string bytes_of(const std::string& rel) {
+  const auto b = read_file(repo_path(rel));
+  REQUIRE(b);
+  return *b;
+}
+
+std::string error_of(const std::string& bytes, const GltfResolver& resolve) {
+  try {
+    parse_gltf(bytes, "m.gltf", resolve);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("glTF from memory: binary and JSON by their magic, the same quad", "[loader][mesh][gltf]") {
+  for (const char* f : {"quad.glb", "quad-textured.gltf", "quad-textured.glb"}) {
+    INFO(f);
+    // The names say nothing: the .glb is read as "m.gltf" and the other way round.
+    const std::vector<GltfPart> parts = parse_gltf(bytes_of(std::string("tests/fuzz/corpus/mesh_gltf/") + f), "m.gltf", {});
+    REQUIRE(parts.size() == 1);
+    const MeshData& m = *parts[0].mesh;
+    REQUIRE(m.positions.size() == 4);
+    REQUIRE(m.normals.size() == 4);
+    REQUIRE(m.uvs.size() == 4);
+    REQUIRE(m.triangles.size() == 2);
+    CHECK(m.positions[2] == glm::vec3(1, 1, 0));
+    CHECK(m.normals[3] == glm::vec3(0, 0, 1));
+    CHECK(m.triangles[1] == glm::uvec3(0, 2, 3));
+    // The file's uv (0, 1) (1, 1) (1, 0) (0, 0): glTF's v runs down the image, ours up.
+    CHECK(m.uvs[0] == glm::vec2(0, 0));
+    CHECK(m.uvs[2] == glm::vec2(1, 1));
+    CHECK(m.uvs[3] == glm::vec2(0, 1));
+    CHECK(bool(parts[0].material.base_color_map) == (std::string(f) != "quad.glb"));
+  }
+  CHECK(error_of("", {}) == "m.gltf: JSON string too short.");
+  CHECK(error_of("glTF\x02", {}) == "m.gltf: byte 5: the file ends inside the GLB header (truncated)");
+}
+
+TEST_CASE("glTF buffer files go through the resolver: refused without one, dependencies with one", "[loader][mesh][gltf]") {
+  // missing-buffer.gltf names "no-such.bin" (the quad's geometry, as quad.glb's BIN chunk).
+  const std::string dir = std::string(PT_BINARY_DIR) + "/gltf-test";
+  std::filesystem::create_directories(dir);
+  const std::string glb = bytes_of("tests/fuzz/corpus/mesh_gltf/quad.glb");
+  uint32_t json = 0, bin = 0;
+  std::memcpy(&json, glb.data() + 12, 4);
+  std::memcpy(&bin, glb.data() + 20 + json, 4);
+  std::ofstream(dir + "/no-such.bin", std::ios::binary) << glb.substr(20 + json + 8, bin);
+  const std::string text = bytes_of("tests/malformed/gltf/missing-buffer.gltf");
+  std::ofstream(dir + "/quad.gltf", std::ios::binary) << text;
+
+  CHECK(error_of(text, {}) == "m.gltf: /buffers/0: file references are disabled for this glTF");
+  CHECK(error_of(bytes_of("tests/malformed/gltf/missing-image.gltf"), {}) == "m.gltf: /images/0: file references are disabled for this glTF");
+  std::vector<std::string> asked;
+  const std::vector<GltfPart> parts = parse_gltf(text, dir + "/quad.gltf", [&](const std::string& p) {
+    asked.push_back(p);
+    return p;
+  });
+  CHECK(asked == std::vector<std::string>{dir + "/no-such.bin"});
+  REQUIRE(parts.size() == 1);
+  CHECK(parts[0].mesh->triangles.size() == 2);
+  CHECK(error_of(text, [](const std::string&) -> std::string { throw InputError("x.xml", 3, "no"); }) ==
+        "m.gltf: /buffers/0: x.xml:3: no");
+
+  const std::string scene = "<SceneLevel><Camera position=\"0 0 5\"/><Objects><Mesh src=\"quad.gltf\"/></Objects></SceneLevel>";
+  const Scene s = load_scene_text(scene, dir + "/s.xml");
+  CHECK(s.files == std::vector<std::string>{dir + "/s.xml", dir + "/quad.gltf", dir + "/no-such.bin"});
+  try {
+    load_scene_text(scene, dir + "/s.xml", false);
+    FAIL("loaded");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("file references are disabled") != std::string::npos);
+  }
+}
+
+TEST_CASE("glTF maps become <Textured>: base colour, normal, metalness as the specular weight", "[loader][mesh][gltf]") {
+  // The textured quad (its 4x4 image: red, green / blue, white quadrants) with that image
+  // also as metallicRoughnessTexture (metalness = blue) and normalTexture.
+  std::string text = bytes_of("tests/fuzz/corpus/mesh_gltf/quad-textured.gltf");
+  const std::string from = "\"metallicFactor\": 0.0, \"roughnessFactor\": 1.0, \"baseColorTexture\": {\"index\": 0}}";
+  const size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, from.size(),
+               "\"metallicFactor\": 0.5, \"roughnessFactor\": 0.5, \"baseColorTexture\": {\"index\": 0}, "
+               "\"metallicRoughnessTexture\": {\"index\": 0}}, \"normalTexture\": {\"index\": 0}");
+  const std::string factor = "\"baseColorFactor\": [1, 1, 1, 1]";
+  REQUIRE(text.find(factor) != std::string::npos);
+  text.replace(text.find(factor), factor.size(), "\"baseColorFactor\": [0.5, 1, 1, 1]");
+  const std::string dir = std::string(PT_BINARY_DIR) + "/gltf-test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/maps.gltf", std::ios::binary) << text;
+  const Scene s = load_scene_text("<SceneLevel><Camera position=\"0 0 5\"/><Objects><Mesh src=\"maps.gltf\"/></Objects></SceneLevel>",
+                                  dir + "/s.xml");
+  REQUIRE(s.materials.size() == 1);
+  const Material& m = s.materials[0];
+  CHECK(m.kind == MaterialKind::Textured);
+  CHECK(m.tint == glm::vec3(0.5f, 1.0f, 1.0f));
+  CHECK(m.exponent == Approx(30.0));  // 2 / alpha^2 - 2, alpha = roughness^2 = 0.25
+  REQUIRE(s.images.size() == 3);
+  REQUIRE(m.diffuse_map >= 0);
+  REQUIRE(m.specular_map >= 0);
+  REQUIRE(m.normal_map >= 0);
+  // Texel (0, 0) of a map is the image's bottom-left: the blue quadrant.
+  const ImageMap& d = *s.images[size_t(m.diffuse_map)];
+  const ImageMap& sp = *s.images[size_t(m.specular_map)];
+  CHECK(d.rgba[0] == 0.0f);
+  CHECK(d.rgba[2] == 1.0f);
+  CHECK(sp.rgba[0] == 0.5f);  // blue 1 x metallicFactor 0.5, grey
+  CHECK(sp.rgba[1] == 0.5f);
+  const size_t top_left = size_t(3 * 4) * 4;  // row 3 (the image's top), column 0: red
+  CHECK(sp.rgba[top_left] == 0.0f);
+  CHECK(s.images[size_t(m.normal_map)]->normal);
+}
