@@ -14,7 +14,9 @@
 #include "gl_context.h"
 #include "glsl_harness.h"
 #include "render/camera.h"
+#include "scene/env_map.h"
 #include "scene_builders.h"
+#include "test_paths.h"
 
 using namespace pt;
 
@@ -243,40 +245,28 @@ TEST_CASE("Fresnel closed forms", "[gpu][transport]") {
   CHECK(out[5].x == Approx(0.5 * (rs * rs + rp * rp)).epsilon(1e-5));
 }
 
-TEST_CASE("white plane under an HDR environment map: the exact irradiance integral", "[gpu][transport]") {
-  test_gl();
-  // For a piecewise-constant map the radiance of a Lambertian plane of albedo 1 facing +y
-  // is exactly (1/pi) sum over upper-hemisphere texels of L * (2 pi / w) *
-  // (sin^2 theta1 - sin^2 theta0) / 2, whatever the rotation. Light sampling of the map
-  // (importance by luminance * sin theta) and MIS with the BSDF must reproduce it.
-  auto map = std::make_shared<EnvImage>();
-  map->width = 24;
-  map->height = 12;
-  map->rgba.assign(size_t(map->width * map->height * 4), 0.0f);
-  uint32_t state = 12345u;
-  auto next = [&]() { return float((state = state * 1664525u + 1013904223u) >> 8) / 16777216.0f; };
+namespace {
+
+// For a piecewise-constant map the radiance of a Lambertian plane of albedo 1 facing +y
+// is exactly (1/pi) sum over upper-hemisphere texels of L * (2 pi / w) *
+// (sin^2 theta1 - sin^2 theta0) / 2, whatever the rotation. Light sampling of the map
+// (importance by luminance * sin theta) and MIS with the BSDF must reproduce it.
+void check_plane_under_map(std::shared_ptr<const EnvImage> map, float rotation, float intensity, const std::string& what) {
   double exact = 0.0;
   const double pi = 3.14159265358979323846;
-  for (int y = 0; y < map->height; ++y)
+  for (int y = 0; 2 * y < map->height; ++y)
     for (int x = 0; x < map->width; ++x) {
-      float* p = &map->rgba[size_t(y * map->width + x) * 4];
-      const float hot = next() < 0.05f ? 60.0f : 0.0f;
-      p[0] = next() + hot;
-      p[1] = 0.5f * next() + hot;
-      p[2] = 0.2f * next();
-      p[3] = 1.0f;
-      if (2 * y < map->height) {
-        const double t0 = pi * y / map->height, t1 = pi * (y + 1) / map->height;
-        const double lum = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
-        exact += lum * (2 * pi / map->width) * 0.5 * (std::sin(t1) * std::sin(t1) - std::sin(t0) * std::sin(t0)) / pi;
-      }
+      const float* p = &map->rgba[size_t(y * map->width + x) * 4];
+      const double t0 = pi * y / map->height, t1 = pi * (y + 1) / map->height;
+      const double lum = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+      exact += lum * (2 * pi / map->width) * 0.5 * (std::sin(t1) * std::sin(t1) - std::sin(t0) * std::sin(t0)) / pi;
     }
   Scene s;
   s.camera.position = glm::vec3(0.0f, 3.0f, 0.0f);
   s.camera.pitch = -80.0f;
-  s.environment.map = map;
-  s.environment.rotation = 123.0f;
-  s.environment.intensity = 1.7f;
+  s.environment.map = std::move(map);
+  s.environment.rotation = rotation;
+  s.environment.intensity = intensity;
   Material white;
   Shape plane;
   plane.kind = ShapeKind::Plane;
@@ -288,7 +278,41 @@ TEST_CASE("white plane under an HDR environment map: the exact irradiance integr
     st.max_bounces = 1;
     st.nee = nee;
     const RenderResult r = render_scene(s, 32, 32, nee ? 64 : 512, st);
-    check_close(nee ? "plane under an environment map, NEE+MIS" : "plane under an environment map, BSDF only",
-                region_mean(r, 0, 0, 32, 32), 1.7 * exact, &r);
+    const std::string name = what + (nee ? ", NEE+MIS" : ", BSDF only");
+    check_close(name.c_str(), region_mean(r, 0, 0, 32, 32), double(intensity) * exact, &r);
   }
+}
+
+}  // namespace
+
+TEST_CASE("white plane under an HDR environment map: the exact irradiance integral", "[gpu][transport]") {
+  test_gl();
+  auto map = std::make_shared<EnvImage>();
+  map->width = 24;
+  map->height = 12;
+  map->rgba.assign(size_t(map->width * map->height * 4), 0.0f);
+  uint32_t state = 12345u;
+  auto next = [&]() { return float((state = state * 1664525u + 1013904223u) >> 8) / 16777216.0f; };
+  for (int y = 0; y < map->height; ++y)
+    for (int x = 0; x < map->width; ++x) {
+      float* p = &map->rgba[size_t(y * map->width + x) * 4];
+      const float hot = next() < 0.05f ? 60.0f : 0.0f;
+      p[0] = next() + hot;
+      p[1] = 0.5f * next() + hot;
+      p[2] = 0.2f * next();
+      p[3] = 1.0f;
+    }
+  check_plane_under_map(map, 123.0f, 1.7f, "plane under an environment map");
+}
+
+TEST_CASE("the shipped environments (assets/env) load and light a plane exactly", "[gpu][transport][env]") {
+  test_gl();
+  int maps = 0;
+  for (const char* name : {"morning", "afternoon", "night"}) {
+    const auto map = load_env_map(repo_path(std::string("assets/env/") + name + ".hdr"));
+    REQUIRE(map->width == 2 * map->height);
+    check_plane_under_map(map, 300.0f, 2.5f, std::string("plane under assets/env/") + name + ".hdr");
+    ++maps;
+  }
+  CHECK(maps == 3);
 }

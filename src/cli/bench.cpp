@@ -45,6 +45,7 @@ int run_bench(const Options& o) {
   r.set_settings(settings);
   r.set_scene(scene);
   std::printf("shader: %zu bytes, compiled and linked in %.1f ms\n", r.integrator_source().text.size(), r.compile_ms());
+  r.warm_up();  // outside the clock: the driver's first-use work
 
   struct Row {
     int spp;

@@ -90,7 +90,9 @@ FloatImage decode_radiance_hdr(const std::string& b, const std::string& path) {
       for (long x = 0; x < w;) {
         const size_t run_at = i;
         const int count = byte(i++);
-        if (count == 0 || count == 128) fail_at(path, run_at, "empty run in scanline " + std::to_string(y));
+        // count > 128: a run of count - 128 copies of the next byte; else count literal bytes
+        // (128 literals included: writers emit them). Only 0 is empty.
+        if (count == 0) fail_at(path, run_at, "empty run in scanline " + std::to_string(y));
         const long n = count > 128 ? count - 128 : count;
         if (x + n > w) fail_at(path, run_at, "a run overruns scanline " + std::to_string(y));
         if (count > 128) {

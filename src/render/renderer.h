@@ -61,6 +61,14 @@ class Renderer {
   // the same.
   int step();
   bool mid_sweep() const { return next_row_ != 0; }
+  // One draw, waited for, then a restart: drivers that compile a program's machine code
+  // at its first use (Mesa's llvmpipe does, for compute kernels) do it here, outside a
+  // timed render. The estimate is as if it never ran.
+  void warm_up() {
+    step();
+    glFinish();
+    restart();
+  }
   // Tone-mapped image into the bound draw framebuffer at viewport (x, y, w, h) = size().
   void display(int x, int y) const;
 
