@@ -90,10 +90,11 @@ void Renderer::update_sh() {
   sh_valid_ = true;
 }
 
-void Renderer::set_scene(const Scene& scene) {
+void Renderer::set_scene(const Scene& scene) { set_scene(scene, pack_scene(scene)); }
+
+void Renderer::set_scene(const Scene& scene, const PackedScene& p) {
   // Everything that can fail (packing, limits, image maps, compiling) happens before any
   // state changes: a scene that cannot be rendered leaves the previous one and its samples.
-  const PackedScene p = pack_scene(scene);
   limits_.require_texture(kDataWidth, p.shapes.rows(), "the scene's objects (" + std::to_string(p.shapes.count()) + ")");
   limits_.require_texture(kDataWidth, p.materials.rows(), "the scene's materials");
   limits_.require_texture(kDataWidth, p.lights.rows(), "the scene's lights");

@@ -18,6 +18,8 @@
 
 namespace pt {
 
+struct PackedScene;
+
 struct RenderSettings {
   int max_bounces = 8;   // scattering events per path (seed: 8, range 1..16)
   int spp_per_pass = 1;  // samples per pixel in one draw (fixed for a whole sweep)
@@ -40,6 +42,9 @@ class Renderer {
 
   // Uploads the scene's data; compiles a program only for a feature set not seen before.
   void set_scene(const Scene& scene);
+  // The same with the scene already packed (render/packing.h: a page packs a large scene
+  // in slices across frames, then swaps it in here at once).
+  void set_scene(const Scene& scene, const PackedScene& packed);
   // Starts building the program for the scene's kinds without waiting for the driver;
   // true when set_scene(scene) will not block on it (always, without
   // KHR_parallel_shader_compile). A page polls this once a frame and keeps drawing.
