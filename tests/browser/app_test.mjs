@@ -336,19 +336,23 @@ async function largeLoad(context, url) {
   await until(page, () => window.ptLoadStatus().samples >= 2 && !window.ptLoadStatus().loading);
   const result = page.evaluate(() => new Promise((done) => {
     const seen = [];  // per frame while loading: stage, progress, the shown scene and its samples
-    let worst = 0, frames = 0, last = performance.now();
+    let worst = 0, frames = 0, last = performance.now(), swapMs = -1, worstAfter = 0;
     const t0 = last;
     const before = window.ptLoadStatus();
     window.ptLoadScene("/scenes/bench/million.xml");
     const tick = () => {
       const now = performance.now();
-      worst = Math.max(worst, now - last);
+      // Up to the swap (this frame included): the load; after it, the new scene's first
+      // draws, which a software GPU makes slow (reported, not bounded here).
+      if (swapMs < 0) worst = Math.max(worst, now - last);
+      else worstAfter = Math.max(worstAfter, now - last);
       last = now;
       frames++;
       const s = window.ptLoadStatus();
       if (s.loading) seen.push({ stage: s.loading.stage, progress: s.loading.progress, scene: s.scene, samples: s.samples });
+      if (swapMs < 0 && s.scene.endsWith("million.xml")) swapMs = now - t0;
       if ((s.scene.endsWith("million.xml") && s.samples >= 1) || (s.error && !s.loading) || now - t0 > 120000)
-        done({ worst, frames, ms: now - t0, seen, before, after: s });
+        done({ worst, worstAfter, frames, ms: now - t0, swapMs, seen, before, after: s });
       else requestAnimationFrame(tick);
     };
     requestAnimationFrame(tick);
@@ -361,8 +365,9 @@ async function largeLoad(context, url) {
   await shot(page, "large-loaded");
   const building = r.seen.filter((x) => x.stage === "building the BVH");
   const increasing = r.seen.every((x, i) => i === 0 || x.progress >= r.seen[i - 1].progress);
-  const oldSamples = Math.max(...r.seen.filter((x) => x.scene === r.before.scene).map((x) => x.samples));
-  console.log(`# million.xml loaded in ${r.ms.toFixed(0)} ms (${r.frames} animation frames, the longest gap ${r.worst.toFixed(0)} ms); ` +
+  const oldSamples = r.seen.filter((x) => x.scene === r.before.scene).reduce((m, x) => Math.max(m, x.samples), -1);
+  console.log(`# million.xml shown ${r.swapMs.toFixed(0)} ms after the request (the longest gap between animation frames ${r.worst.toFixed(0)} ms), ` +
+              `its first samples after ${r.ms.toFixed(0)} ms (${r.frames} animation frames; the longest gap after the swap ${r.worstAfter.toFixed(0)} ms); ` +
               `packed in ${s.lastLoad.slices} slices, ${s.lastLoad.packWorkMs.toFixed(0)} ms of work, the longest slice ` +
               `${s.lastLoad.longestSliceMs.toFixed(0)} ms; BVH ${s.lastLoad.bvhBuildMs.toFixed(0)} ms of work; ready ${s.lastLoad.ms.toFixed(0)} ms ` +
               `after the request; scene2 went from ${r.before.samples} to ${oldSamples} samples meanwhile`);
