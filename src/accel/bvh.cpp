@@ -238,7 +238,8 @@ int BvhBuilder::bin_of(float c, float lo, float scale) const {
 
 Bvh build_bvh(const std::vector<Aabb>& boxes, const BvhBuildOptions& options) {
   BvhBuilder b(boxes, options);
-  b.run(LONG_MAX);
+  while (!b.run(LONG_MAX)) {  // (long is 32 bits in wasm)
+  }
   return b.take();
 }
 

@@ -49,6 +49,8 @@ Bvh build_bvh(const std::vector<Aabb>& boxes, const BvhBuildOptions& options = {
 class BvhBuilder {
  public:
   BvhBuilder(const std::vector<Aabb>& boxes, const BvhBuildOptions& options = {});
+  BvhBuilder(const BvhBuilder&) = delete;
+  BvhBuilder& operator=(const BvhBuilder&) = delete;
   bool run(long work);
   bool done() const { return phase_ == Phase::Done; }
   long work_done() const { return work_done_; }  // units spent so far

@@ -260,8 +260,10 @@ TEST_CASE("BVH: the sliced build equals the one-shot reference builder, bit for 
   deep.max_depth = 20;
   check_against_reference(chain, deep, "geometric chain");
   CHECK(build_bvh({}, o).nodes.empty());
-  BvhBuilder empty(std::vector<Aabb>{}, o);
+  const std::vector<Aabb> none;
+  BvhBuilder empty(none, o);
   CHECK(empty.done());
+  CHECK(empty.progress() == 1.0);
 }
 
 TEST_CASE("packing in slices gives the one-shot pack; its BVH is the reference builder's", "[bvh][packing]") {

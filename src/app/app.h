@@ -152,7 +152,7 @@ class App {
     double upload_ms = 0.0;
     int slices = 0;
   };
-  void load_failed(const std::string& path, const std::string& why);
+  void load_failed(std::string path, std::string why);
   std::string load_fields() const;
   double load_progress() const;  // 0..1
   bool shown_ = false;  // the renderer has a scene (not yet after a lost context)

@@ -64,7 +64,7 @@ bool App::work(double budget_ms) {
   return !l.packed;
 }
 
-void App::load_failed(const std::string& path, const std::string& why) {
+void App::load_failed(std::string path, std::string why) {  // copies: loading_ holds the originals
   loading_.reset();
   error_ = why;
   if (loads_ == 0) {

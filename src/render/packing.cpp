@@ -303,7 +303,8 @@ PackedScene PackJob::take() {
 
 PackedScene pack_scene(const Scene& scene) {
   PackJob job(scene);
-  job.run(LONG_MAX);
+  while (!job.run(LONG_MAX)) {  // (long is 32 bits in wasm)
+  }
   return job.take();
 }
 

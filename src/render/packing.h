@@ -35,6 +35,8 @@ PackedScene pack_scene(const Scene& scene);  // runs a PackJob to completion
 class PackJob {
  public:
   explicit PackJob(const Scene& scene);
+  PackJob(const PackJob&) = delete;  // its BvhBuilder refers to boxes_
+  PackJob& operator=(const PackJob&) = delete;
   bool run(long work);
   bool done() const { return stage_ == Stage::Done; }
   const char* stage() const;  // what it is doing, for a progress line
