@@ -8,23 +8,21 @@ namespace pt {
 
 BvhBuilder::BvhBuilder(const std::vector<Aabb>& boxes, const BvhBuildOptions& o) : boxes_(boxes), o_(o) {
   const size_t n = boxes.size();
-  centers_.resize(n);
-  out_.order.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    centers_[i] = boxes[i].center();
-    out_.order[i] = int(i);
-  }
   o_.bins = std::clamp(o_.bins, 2, kMaxBins);
   o_.max_leaf = std::clamp(o_.max_leaf, 1, 16);
   o_.single_leaf_max = std::clamp(o_.single_leaf_max, 1, 16);
+  centers_.resize(n);
+  out_.order.resize(n);
   if (boxes_.empty()) {
     phase_ = Phase::Done;
     return;
   }
-  out_.nodes.reserve(2 * n / size_t(std::min(o_.max_leaf, 2)) + 1);
-  out_.nodes.emplace_back();
   if (int(n) <= o_.single_leaf_max) {
-    for (const Aabb& b : boxes_) out_.nodes[0].box.grow(b);
+    out_.nodes.emplace_back();
+    for (size_t i = 0; i < n; ++i) {
+      out_.order[i] = int(i);
+      out_.nodes[0].box.grow(boxes_[i]);
+    }
     out_.nodes[0].first = 0;
     out_.nodes[0].count = int(n);
     out_.depth = 1;
@@ -32,9 +30,8 @@ BvhBuilder::BvhBuilder(const std::vector<Aabb>& boxes, const BvhBuildOptions& o)
     phase_ = Phase::Done;
     return;
   }
-  stack_.push_back({0, 0, int(n), 1});
+  phase_ = Phase::Setup;  // the centroids, in slices too: a million boxes take a while
 }
-
 double BvhBuilder::progress() const {
   return boxes_.empty() ? 1.0 : double(placed_) / double(boxes_.size());
 }
@@ -48,6 +45,20 @@ bool BvhBuilder::run(long work) {
   const long given = work;
   while (work > 0 && phase_ != Phase::Done) {
     switch (phase_) {
+      case Phase::Setup: {
+        const int start = i_, stop = stop_at(int(boxes_.size()));
+        for (; i_ < stop; ++i_) {
+          centers_[size_t(i_)] = boxes_[size_t(i_)].center();
+          out_.order[size_t(i_)] = i_;
+        }
+        work -= stop - start;
+        if (i_ < int(boxes_.size())) break;
+        out_.nodes.reserve(2 * boxes_.size() / size_t(std::min(o_.max_leaf, 2)) + 1);
+        out_.nodes.emplace_back();
+        stack_.push_back({0, 0, int(boxes_.size()), 1});
+        phase_ = Phase::Next;
+        break;
+      }
       case Phase::Next: {
         if (stack_.empty()) {
           phase_ = Phase::Done;

@@ -59,7 +59,7 @@ class BvhBuilder {
 
  private:
   static constexpr int kMaxBins = 64;
-  enum class Phase { Next, Bounds, Bins, Partition, Done };
+  enum class Phase { Setup, Next, Bounds, Bins, Partition, Done };
   struct Task {
     int node, begin, end, depth;
   };
@@ -75,11 +75,11 @@ class BvhBuilder {
   Bvh out_;
   std::vector<glm::vec3> centers_;
   std::vector<Task> stack_;
-  Phase phase_ = Phase::Next;
+  Phase phase_ = Phase::Setup;
   long placed_ = 0, work_done_ = 0;
   // The node in progress: its range and where each loop stands.
   Task t_{};
-  int i_ = 0;          // bounds and binning: the next entry of the range
+  int i_ = 0;          // set-up: the next box; bounds and binning: the next entry of the range
   Aabb box_, cbox_;    // its box, and the box of its primitives' centroids
   bool axis_ok_[3] = {false, false, false};
   float bin_lo_[3] = {0, 0, 0}, bin_scale_[3] = {0, 0, 0};
