@@ -438,7 +438,7 @@ std::string App::stats_json() const {
   j += ",\"error\":" + (error_ ? json_string(*error_) : std::string("null"));
   j += ",\"renderer\":" + json_string(options_.gl_renderer);
   j += ",\"loads\":" + std::to_string(loads_);
-  j += ",\"compiling\":" + std::string(loading_ && loading_->packed ? "true" : "false");
+  j += ",\"compiling\":" + std::string(loading_ && !preparing() ? "true" : "false");
   j += "," + load_fields();
   j += ",\"programsCompiled\":" + std::to_string(renderer_->programs_compiled());
   j += ",\"contextRestores\":" + std::to_string(context_restores_);

@@ -72,7 +72,8 @@ class App {
   // calls it between animation frames (web.cpp), so the build uses the time the frames
   // leave idle; frame() does a slice too.
   bool work(double budget_ms);
-  bool preparing() const { return loading_ && !loading_->packed; }  // work() has more to do
+  // work() has more to do: packing, or uploading the record textures.
+  bool preparing() const { return loading_ && !(loading_->staged && loading_->staged->done()); }
   const Scene& scene() const { return scene_; }
   std::string scene_files_json() const;                  // Scene::files of the current scene
   // The platform: keys move the camera only while the canvas has keyboard focus.

@@ -45,23 +45,32 @@ void App::start_loading(Scene scene, bool keep_camera) {
 }
 
 bool App::work(double budget_ms) {
-  if (!loading_ || loading_->packed) return false;
+  if (!preparing()) return false;
   Loading& l = *loading_;
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    bool done = false;
-    while (!(done = l.pack->run(kPackWorkUnits)) && ms_since(t0) < budget_ms) {
+    if (!l.packed) {
+      bool done = false;
+      while (!(done = l.pack->run(kPackWorkUnits)) && ms_since(t0) < budget_ms) {
+      }
+      if (done) l.packed = l.pack->take();
+      const double ms = ms_since(t0);
+      l.work_ms += ms;
+      l.longest_slice_ms = std::max(l.longest_slice_ms, ms);
+      ++l.slices;
+    } else {
+      // Then the record textures, a band of rows at a time (copies to the GPU; WebGL
+      // calls between animation frames are fine, and a lost context drops `staged`).
+      if (!l.staged) l.staged = std::make_unique<StagedScene>(renderer_->limits(), *l.packed);
+      while (!l.staged->upload(kUploadRows) && ms_since(t0) < budget_ms) {
+      }
+      l.upload_ms += ms_since(t0);
     }
-    if (done) l.packed = l.pack->take();
   } catch (const std::exception& e) {
     load_failed(l.scene->path, e.what());
     return false;
   }
-  const double ms = ms_since(t0);
-  l.work_ms += ms;
-  l.longest_slice_ms = std::max(l.longest_slice_ms, ms);
-  ++l.slices;
-  return !l.packed;
+  return preparing();
 }
 
 void App::load_failed(std::string path, std::string why) {  // copies: loading_ holds the originals
@@ -79,17 +88,10 @@ void App::load_failed(std::string path, std::string why) {  // copies: loading_ 
 
 void App::poll_loading() {
   work(kFrameWorkMs);  // the frame's own slice; the page adds slices between frames
-  if (!loading_ || !loading_->packed) return;
+  if (!loading_) return;
   const std::string path = loading_->scene->path;
   try {
-    Loading& p = *loading_;
-    // The record textures, a few milliseconds of rows per frame (a copy to the GPU).
-    if (!p.staged) p.staged = std::make_unique<StagedScene>(renderer_->limits(), *p.packed);
-    const auto t0 = std::chrono::steady_clock::now();
-    while (!p.staged->upload(kUploadRows) && ms_since(t0) < kFrameWorkMs) {
-    }
-    p.upload_ms += ms_since(t0);
-    if (!p.staged->done() || !renderer_->program_ready(*p.scene)) return;
+    if (preparing() || !renderer_->program_ready(*loading_->scene)) return;
     Loading l = std::move(*loading_);
     loading_.reset();
     std::optional<Camera> camera;

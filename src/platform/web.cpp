@@ -82,8 +82,10 @@ constexpr double kWorkSliceMs = 8.0;  // one slice of scene preparation between 
 // While a scene is being prepared, a frame is drawn only once the preparation has had
 // this many times the time the last drawn frame took: with a software GPU a frame costs
 // the page's thread tens of milliseconds, which would otherwise leave the preparation a
-// small share of it. With a fast GPU every frame is still drawn.
-constexpr double kPrepareShare = 2.0;
+// small share of it (2 gave about 1.6x the preparation's own time from request to swap
+// with SwiftShader, 4 about 1.3-1.5x; docs/benchmarks.md). With a fast GPU every frame is
+// still drawn.
+constexpr double kPrepareShare = 4.0;
 double g_last_draw_end = 0.0, g_last_draw_ms = 0.0;
 
 GLFWwindow* g_window = nullptr;
