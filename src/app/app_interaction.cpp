@@ -257,12 +257,12 @@ void App::draw_loading() {
   char overlay[96];
   const double s = ms_since(l.since) * 1e-3;
   if (l.packed && !(l.staged && l.staged->done())) {
-    std::snprintf(overlay, sizeof overlay, "uploading %.0f%%  %.1f s", l.staged ? 100.0 * l.staged->progress() : 0.0, s);
+    std::snprintf(overlay, sizeof overlay, "uploading %.0f%%  %.1f s", 100.0 * load_progress(), s);
   } else if (l.packed) {
     const char* frames = "|/-\\";  // a spinner: the driver compiles in the background
     std::snprintf(overlay, sizeof overlay, "compiling shader %c %.1f s", frames[int(last_frame_ms_ / 120.0) & 3], s);
   } else {
-    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", l.pack->stage(), 100.0 * l.pack->progress(), s);
+    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", l.pack->stage(), 100.0 * load_progress(), s);
   }
   ImGui::ProgressBar(float(load_progress()), ImVec2(ImGui::GetFontSize() * 20.0f, 0.0f), overlay);
 }
