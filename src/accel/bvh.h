@@ -37,7 +37,57 @@ struct Bvh {
 };
 
 // Builds over primitives given by their boxes; centroids are the boxes' centres.
-// Empty input gives an empty hierarchy (no nodes).
+// Empty input gives an empty hierarchy (no nodes). Runs a BvhBuilder to completion.
 Bvh build_bvh(const std::vector<Aabb>& boxes, const BvhBuildOptions& options = {});
+
+// The same build, resumable, so that a page can build a large hierarchy a few
+// milliseconds per animation frame: run(work) does at most about `work` units (one unit:
+// one primitive visited by one of the loops over a node's range) and returns true once
+// the hierarchy is complete. An explicit stack of node ranges, and every loop over a
+// range (bounds, binning, partition) resumable at any primitive: the result does not
+// depend on how the work was sliced (bit for bit, tested). `boxes` must outlive it.
+class BvhBuilder {
+ public:
+  BvhBuilder(const std::vector<Aabb>& boxes, const BvhBuildOptions& options = {});
+  BvhBuilder(const BvhBuilder&) = delete;
+  BvhBuilder& operator=(const BvhBuilder&) = delete;
+  bool run(long work);
+  bool done() const { return phase_ == Phase::Done; }
+  long work_done() const { return work_done_; }  // units spent so far
+  double progress() const;  // the fraction of primitives placed in leaves
+  Bvh take();               // once done(): the hierarchy (the builder is then spent)
+
+ private:
+  static constexpr int kMaxBins = 64;
+  enum class Phase { Setup, Next, Bounds, Bins, Partition, Done };
+  struct Task {
+    int node, begin, end, depth;
+  };
+  void after_bounds();
+  void after_bins();
+  void finish(int mid);  // mid < 0: a leaf; else children [begin, mid) and [mid, end)
+  int median_split();
+  int levels_below(int n) const;
+  int bin_of(float c, float lo, float scale) const;
+
+  const std::vector<Aabb>& boxes_;
+  BvhBuildOptions o_;
+  Bvh out_;
+  std::vector<glm::vec3> centers_;
+  std::vector<Task> stack_;
+  Phase phase_ = Phase::Setup;
+  long placed_ = 0, work_done_ = 0;
+  // The node in progress: its range and where each loop stands.
+  Task t_{};
+  int i_ = 0;          // set-up: the next box; bounds and binning: the next entry of the range
+  Aabb box_, cbox_;    // its box, and the box of its primitives' centroids
+  bool axis_ok_[3] = {false, false, false};
+  float bin_lo_[3] = {0, 0, 0}, bin_scale_[3] = {0, 0, 0};
+  Aabb bin_box_[3][kMaxBins];
+  int bin_count_[3][kMaxBins] = {};
+  int split_axis_ = -1, split_bin_ = 0;
+  int first_ = 0, last_ = 0;  // the partition's two ends (std::partition's two-pointer walk)
+  bool scan_front_ = true;
+};
 
 }  // namespace pt

@@ -124,17 +124,12 @@ void App::scan_scenes() {
 
 bool App::load_scene(const std::string& path, bool keep_camera) {
   try {
+    const auto t0 = std::chrono::steady_clock::now();
     Scene s = load_scene_file(path);
+    std::printf("scene %s: read in %.0f ms\n", path.c_str(), ms_since(t0));
     s.path = path;
-    std::optional<Camera> camera;
-    if (keep_camera && loads_ > 0) camera = renderer_->camera();
     error_.reset();
-    if (!renderer_->program_ready(s)) {  // compiling in the background: the current scene keeps rendering
-      pending_ = Pending{std::move(s), camera, last_frame_ms_};
-      return true;
-    }
-    pending_.reset();
-    apply_scene(std::move(s), camera);  // throws before changing anything if the program does not build
+    start_loading(std::move(s), keep_camera && loads_ > 0);
     return true;
   } catch (const std::exception& e) {
     error_ = e.what();
@@ -155,7 +150,7 @@ void App::frame(int fb_w, int fb_h, double now_ms) {
 
   fb_w_ = fb_w;
   fb_h_ = fb_h;
-  poll_pending_scene(now_ms);
+  poll_loading();
   handle_input(std::min(dt_ms, 100.0) * 1e-3);
   handle_click();
   const glm::ivec2 size = render_size(fb_w, fb_h, now_ms);
@@ -339,7 +334,7 @@ void App::render_passes(double now_ms, double dt_ms) {
   // of a background tab, after which the count simply grows back).
   const int image_rows = renderer_->height();
   const int band = settings_.band_rows > 0 ? std::min(settings_.band_rows, image_rows) : image_rows;
-  if (dt_ms > kSlowFrameMs) {
+  if (dt_ms > kSlowFrameMs && !preparing()) {  // frames slowed by a preparation say nothing of the draws
     if (passes_per_frame_ > 1) {
       passes_per_frame_ = std::max(1, int(std::min(0.9, kTargetFrameMs / dt_ms) * passes_per_frame_));
     } else if (band > kMinBandRows && dt_ms > kSlowBandFrameMs) {
@@ -350,14 +345,17 @@ void App::render_passes(double now_ms, double dt_ms) {
   if (renderer_->samples() == 0) restart_ms_ = now_ms;
   const auto t0 = std::chrono::steady_clock::now();
   int done = 0;
-  while (done < passes_per_frame_ && !renderer_->converged()) {
+  // While a scene is being prepared, one draw per frame: the preparation gets the time
+  // (and, with a software GPU, the CPU) that more draws would take.
+  const int passes = preparing() ? 1 : passes_per_frame_;
+  while (done < passes && !renderer_->converged()) {
     total_samples_ += renderer_->step();  // samples count when a sweep completes
     ++done;
     if (ms_since(t0) > kCpuBudgetMs) break;
   }
   // Grow only when this frame used all its passes, else an idle (converged) image would
   // ratchet the count up and the next restart would start with one very long frame.
-  if (dt_ms > 0 && dt_ms < kFastFrameMs && done == passes_per_frame_) {
+  if (dt_ms > 0 && dt_ms < kFastFrameMs && done == passes_per_frame_ && !preparing()) {
     if (band < image_rows) settings_.band_rows = band * 2 >= image_rows ? 0 : band * 2;
     else passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
   }
@@ -440,7 +438,8 @@ std::string App::stats_json() const {
   j += ",\"error\":" + (error_ ? json_string(*error_) : std::string("null"));
   j += ",\"renderer\":" + json_string(options_.gl_renderer);
   j += ",\"loads\":" + std::to_string(loads_);
-  j += ",\"compiling\":" + std::string(pending_ ? "true" : "false");
+  j += ",\"compiling\":" + std::string(loading_ && !preparing() ? "true" : "false");
+  j += "," + load_fields();
   j += ",\"programsCompiled\":" + std::to_string(renderer_->programs_compiled());
   j += ",\"contextRestores\":" + std::to_string(context_restores_);
   j += ",\"renderScale\":" + json_number(render_scale_);
@@ -451,6 +450,29 @@ std::string App::stats_json() const {
     j += ",\"selectedKind\":" + json_string(info(sh.kind).xml) + ",\"selectedLine\":" + std::to_string(sh.line);
   }
   return j + "}";
+}
+
+// The scene on its way (null when none) and the last one's preparation.
+std::string App::load_fields() const {
+  std::string j = "\"loading\":";
+  if (loading_) {
+    j += "{\"scene\":" + json_string(loading_->scene->path) + ",\"stage\":" +
+         json_string(!loading_->packed ? loading_->pack->stage() : loading_->staged && loading_->staged->done() ? "compiling" : "uploading") +
+         ",\"progress\":" + json_number(load_progress()) + "}";
+  } else {
+    j += "null";
+  }
+  const Renderer::BvhStats& b = renderer_->bvh_stats();
+  j += ",\"lastLoad\":{\"ms\":" + json_number(last_load_ms_) + ",\"packWorkMs\":" + json_number(last_pack_work_ms_) +
+       ",\"slices\":" + std::to_string(last_slices_) + ",\"longestSliceMs\":" + json_number(last_longest_slice_ms_) +
+       ",\"bvhBuildMs\":" + json_number(b.build_ms) + ",\"primitives\":" + std::to_string(b.primitives) + "}";
+  return j;
+}
+
+std::string App::load_status_json() const {
+  return "{\"samples\":" + std::to_string(renderer_->samples()) + ",\"scene\":" + json_string(scene_.path) +
+         ",\"error\":" + (error_ ? json_string(*error_) : std::string("null")) + ",\"loads\":" + std::to_string(loads_) + "," +
+         load_fields() + "}";
 }
 
 }  // namespace pt

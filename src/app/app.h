@@ -2,6 +2,7 @@
 // and the camera controls. The platform creates the GL context and the ImGui backends,
 // and calls frame() once per displayed frame between ImGui::NewFrame() and ImGui::Render().
 #pragma once
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -11,7 +12,9 @@
 
 #include "app/env_panel.h"
 #include "gpu/texture.h"
+#include "render/packing.h"
 #include "render/renderer.h"
+#include "render/staged_scene.h"
 #include "scene/scene.h"
 
 namespace pt {
@@ -50,15 +53,27 @@ class App {
 
   // Test hooks.
   std::string stats_json() const;                        // see web/index.html: ptStats()
+  // Samples, scene, error, loads and the loading fields of the stats, without reading the
+  // image back: cheap enough to poll every frame (ptLoadStatus()).
+  std::string load_status_json() const;
   // The current view as URL parameters (scene, cam, bounces, tonemap, exposure): a link
   // with them reproduces it. The page keeps its address up to date with this.
   std::string view_query() const;
   void set_fixed_size(int w, int h);                     // 0, 0: follow the framebuffer
   void set_sample_limit(int n);
   // false: error() says why and the current scene stays. keep_camera: a reload of an
-  // edited scene keeps the view. A scene whose program is still compiling in the
-  // background (KHR_parallel_shader_compile) replaces the current one when it is ready.
+  // edited scene keeps the view. The scene is then prepared (packed, its BVH built) in
+  // slices of a few milliseconds (work(), and frame()) and its program built in the
+  // background where the browser can (KHR_parallel_shader_compile), while the current
+  // scene keeps rendering; it replaces the current one, at once, when ready. A failure
+  // on the way shows its error and leaves the current scene and its samples.
   bool load_scene(const std::string& path, bool keep_camera = false);
+  // A slice of that preparation, of about budget_ms; true while more remains. The page
+  // calls it between animation frames (web.cpp), so the build uses the time the frames
+  // leave idle; frame() does a slice too.
+  bool work(double budget_ms);
+  // work() has more to do: packing, or uploading the record textures.
+  bool preparing() const { return loading_ && !(loading_->staged && loading_->staged->done()); }
   const Scene& scene() const { return scene_; }
   std::string scene_files_json() const;                  // Scene::files of the current scene
   // The platform: keys move the camera only while the canvas has keyboard focus.
@@ -78,8 +93,10 @@ class App {
   void present(int fb_w, int fb_h);
   void scan_scenes();
   // app_interaction.cpp: scene switching, picking and the selection panel, render size.
-  void apply_scene(Scene scene, const std::optional<Camera>& camera);
-  void poll_pending_scene(double now_ms);
+  void start_loading(Scene scene, bool keep_camera);
+  void apply_scene(Scene scene, const PackedScene& packed, StagedScene* staged, const std::optional<Camera>& camera);
+  void poll_loading();
+  void draw_loading();
   void handle_click();
   void draw_selection_panel(int fb_w);
   void draw_view_controls();
@@ -123,14 +140,29 @@ class App {
   Texture present_tex_;
   Framebuffer present_fbo_;
 
-  // A loaded scene waiting for its program; applied by poll_pending_scene.
-  struct Pending {
-    Scene scene;
-    std::optional<Camera> camera;  // the view to keep, else the scene's
-    double since_ms = -1.0;
+  // A loaded scene being packed in slices, then waiting for its program; applied by
+  // poll_loading once both are done.
+  struct Loading {
+    std::unique_ptr<Scene> scene;  // at a fixed address: the job reads it
+    std::unique_ptr<PackJob> pack;
+    std::optional<PackedScene> packed;
+    std::unique_ptr<StagedScene> staged;  // its record textures, uploaded a band per frame
+    bool keep_camera = false;      // the view then is kept, else the scene's is shown
+    std::chrono::steady_clock::time_point since;  // when it was asked for
+    double work_ms = 0.0, longest_slice_ms = 0.0;  // time spent in slices of the packing
+    double upload_ms = 0.0;
+    int slices = 0;
   };
-  std::optional<Pending> pending_;
+  void load_failed(std::string path, std::string why);
+  std::string load_fields() const;
+  double load_progress() const;  // 0..1
+  bool shown_ = false;  // the renderer has a scene (not yet after a lost context)
+  std::optional<Loading> loading_;
   int loads_ = 0, context_restores_ = 0;
+  // The last preparation, for the stats: wall time from the request to the swap, the
+  // packing's slices and their time, and the longest slice.
+  double last_load_ms_ = 0.0, last_pack_work_ms_ = 0.0, last_longest_slice_ms_ = 0.0;
+  int last_slices_ = 0;
 
   // Picking: a left press and release on the image without moving selects.
   int selected_ = -1;

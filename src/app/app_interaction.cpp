@@ -22,15 +22,99 @@ namespace {
 
 constexpr float kMotionScale = 0.5f;       // of the render size, per axis, while the camera moves
 constexpr float kClickSlopPixels = 4.0f;   // a press and release closer than this is a click, not a drag
+// Scene preparation: each frame packs for about this long (the page adds slices between
+// frames), checking the clock every kPackWorkUnits units (about 0.1-0.5 ms).
+constexpr double kFrameWorkMs = 4.0;
+constexpr long kPackWorkUnits = 8192;
+constexpr int kUploadRows = 8;  // rows of record texels per upload call (512 KB)
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
 
 }  // namespace
 
-void App::apply_scene(Scene scene, const std::optional<Camera>& camera) {
+void App::start_loading(Scene scene, bool keep_camera) {
+  Loading l;
+  l.scene = std::make_unique<Scene>(std::move(scene));
+  renderer_->program_ready(*l.scene);  // its program starts building alongside the packing
+  l.pack = std::make_unique<PackJob>(*l.scene);
+  l.keep_camera = keep_camera;
+  l.since = std::chrono::steady_clock::now();
+  loading_ = std::move(l);  // a newer request replaces one in progress
+}
+
+bool App::work(double budget_ms) {
+  if (!preparing()) return false;
+  Loading& l = *loading_;
   const auto t0 = std::chrono::steady_clock::now();
-  renderer_->set_scene(scene);  // throws before changing anything if the program does not build
-  const Renderer::BvhStats& b = renderer_->bvh_stats();
-  std::printf("scene %s: BVH of %d primitives built in %.0f ms; scene set in %.0f ms\n", scene.path.c_str(), b.primitives,
-              b.build_ms, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  try {
+    if (!l.packed) {
+      bool done = false;
+      while (!(done = l.pack->run(kPackWorkUnits)) && ms_since(t0) < budget_ms) {
+      }
+      if (done) l.packed = l.pack->take();
+      const double ms = ms_since(t0);
+      l.work_ms += ms;
+      l.longest_slice_ms = std::max(l.longest_slice_ms, ms);
+      ++l.slices;
+    } else {
+      // Then the record textures, a band of rows at a time (copies to the GPU; WebGL
+      // calls between animation frames are fine, and a lost context drops `staged`).
+      if (!l.staged) l.staged = std::make_unique<StagedScene>(renderer_->limits(), *l.packed);
+      while (!l.staged->upload(kUploadRows) && ms_since(t0) < budget_ms) {
+      }
+      l.upload_ms += ms_since(t0);
+    }
+  } catch (const std::exception& e) {
+    load_failed(l.scene->path, e.what());
+    return false;
+  }
+  return preparing();
+}
+
+void App::load_failed(std::string path, std::string why) {  // copies: loading_ holds the originals
+  loading_.reset();
+  error_ = why;
+  if (loads_ == 0) {
+    // Nothing rendered yet, so there is no previous scene to keep: fall back to the
+    // default one, but keep showing why the requested scene failed.
+    const std::string fallback = AppOptions{}.scene;
+    if (path != fallback && load_scene(fallback)) error_ = why;
+  } else if (!shown_) {
+    start_loading(scene_, true);  // after a lost context: the kept scene again
+  }
+}
+
+void App::poll_loading() {
+  work(kFrameWorkMs);  // the frame's own slice; the page adds slices between frames
+  if (!loading_) return;
+  const std::string path = loading_->scene->path;
+  try {
+    if (preparing() || !renderer_->program_ready(*loading_->scene)) return;
+    Loading l = std::move(*loading_);
+    loading_.reset();
+    std::optional<Camera> camera;
+    if (l.keep_camera) camera = renderer_->camera();
+    const auto t1 = std::chrono::steady_clock::now();
+    apply_scene(std::move(*l.scene), *l.packed, l.staged.get(), camera);  // throws before changing anything if the program does not build
+    last_load_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - l.since).count();
+    last_pack_work_ms_ = l.work_ms;
+    last_slices_ = l.slices;
+    last_longest_slice_ms_ = l.longest_slice_ms;
+    const Renderer::BvhStats& b = renderer_->bvh_stats();
+    std::printf("scene %s: BVH of %d primitives built in %.0f ms; packed in %d slices (%.0f ms, the longest %.0f ms); "
+                "uploaded in %.0f ms; scene set in %.0f ms; ready %.0f ms after the request\n",
+                scene_.path.c_str(), b.primitives, b.build_ms, l.slices, l.work_ms, l.longest_slice_ms, l.upload_ms, ms_since(t1),
+                last_load_ms_);
+  } catch (const std::exception& e) {
+    load_failed(path, e.what());
+  }
+}
+
+void App::apply_scene(Scene scene, const PackedScene& packed, StagedScene* staged, const std::optional<Camera>& camera) {
+  renderer_->set_scene(scene, packed, staged);  // throws before changing anything if the program does not build
+  shown_ = true;
   env_panel_.scene_loaded(scene.environment);
   if (camera) {
     renderer_->set_camera(*camera);
@@ -49,20 +133,6 @@ void App::apply_scene(Scene scene, const std::optional<Camera>& camera) {
   ++loads_;
 }
 
-void App::poll_pending_scene(double now_ms) {
-  if (!pending_) return;
-  if (pending_->since_ms < 0.0) pending_->since_ms = now_ms;
-  try {
-    if (!renderer_->program_ready(pending_->scene)) return;
-    Pending p = std::move(*pending_);
-    pending_.reset();
-    apply_scene(std::move(p.scene), p.camera);
-  } catch (const std::exception& e) {
-    pending_.reset();
-    error_ = e.what();
-  }
-}
-
 std::string App::scene_files_json() const {
   std::string j = "[";
   for (const std::string& f : scene_.files) j += (j.size() > 1 ? "," : "") + json_string(f);
@@ -77,7 +147,15 @@ void App::context_restored() {
   present_tex_ = Texture();
   renderer_ = std::make_unique<Renderer>();
   renderer_->set_settings(settings_);
-  if (loads_ > 0) pending_ = Pending{scene_, camera, last_frame_ms_};
+  renderer_->set_camera(camera);
+  shown_ = false;
+  // The kept scene is packed again (in slices), unless another is on its way; should that
+  // one fail, load_failed brings the kept one back.
+  if (loading_) {
+    loading_->staged.reset();  // its textures were the lost context's
+    renderer_->program_ready(*loading_->scene);
+  }
+  else if (loads_ > 0) start_loading(scene_, true);
   ++context_restores_;
 }
 
@@ -158,12 +236,35 @@ void App::draw_view_controls() {
   const int n = renderer_->samples(), limit = settings_.sample_limit;
   if (limit > 0 && n < limit && samples_per_second_ > 0.0)
     ImGui::Text("remaining  %.1f s to %d samples", double(limit - n) / samples_per_second_, limit);
-  if (pending_) {
-    // A spinner: the page keeps drawing while the driver compiles in the background.
-    const char* frames = "|/-\\";
-    const double s = std::max(0.0, last_frame_ms_ - pending_->since_ms) * 1e-3;
-    ImGui::Text("compiling shader %c %.1f s", frames[int(last_frame_ms_ / 120.0) & 3], s);
+  draw_loading();
+}
+
+// The whole preparation: packing (its stages weighted in PackJob::progress), then the
+// upload, which took about a tenth as long for a large mesh.
+double App::load_progress() const {
+  if (!loading_) return 1.0;
+  const Loading& l = *loading_;
+  return l.packed ? 0.9 + 0.1 * (l.staged ? l.staged->progress() : 0.0) : 0.9 * l.pack->progress();
+}
+
+// A scene on its way: what is being done, and how far (the page keeps drawing meanwhile).
+void App::draw_loading() {
+  if (!loading_) return;
+  const Loading& l = *loading_;
+  const std::string& path = l.scene->path;
+  const size_t slash = path.find_last_of('/');
+  ImGui::Text("loading %s", slash == std::string::npos ? path.c_str() : path.c_str() + slash + 1);
+  char overlay[96];
+  const double s = ms_since(l.since) * 1e-3;
+  if (l.packed && !(l.staged && l.staged->done())) {
+    std::snprintf(overlay, sizeof overlay, "uploading %.0f%%  %.1f s", 100.0 * load_progress(), s);
+  } else if (l.packed) {
+    const char* frames = "|/-\\";  // a spinner: the driver compiles in the background
+    std::snprintf(overlay, sizeof overlay, "compiling shader %c %.1f s", frames[int(last_frame_ms_ / 120.0) & 3], s);
+  } else {
+    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", l.pack->stage(), 100.0 * load_progress(), s);
   }
+  ImGui::ProgressBar(float(load_progress()), ImVec2(ImGui::GetFontSize() * 20.0f, 0.0f), overlay);
 }
 
 }  // namespace pt

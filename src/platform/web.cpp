@@ -62,7 +62,31 @@ EM_JS(void, pt_js_request_scene, (const char* path), {
   else Module._pt_load_scene(path);
 });
 
+// A scene being prepared gets slices of work between animation frames too, each a task of
+// its own (a MessageChannel message: setTimeout would be clamped to 4 ms when nested), so
+// input and the next frame run in between and the page never waits long.
+EM_JS(void, pt_js_pump_work, (double slice_ms), {
+  if (Module.ptWorkPump) return;
+  const channel = new MessageChannel();
+  Module.ptWorkPump = channel;
+  channel.port1.onmessage = () => {
+    if (Module._pt_work(slice_ms)) channel.port2.postMessage(0);
+    else Module.ptWorkPump = null;
+  };
+  channel.port2.postMessage(0);
+});
+
 namespace {
+
+constexpr double kWorkSliceMs = 8.0;  // one slice of scene preparation between frames
+// While a scene is being prepared, a frame is drawn only once the preparation has had
+// this many times the time the last drawn frame took: with a software GPU a frame costs
+// the page's thread tens of milliseconds, which would otherwise leave the preparation a
+// small share of it (2 gave about 1.6x the preparation's own time from request to swap
+// with SwiftShader, 4 about 1.3-1.5x; docs/benchmarks.md). With a fast GPU every frame is
+// still drawn.
+constexpr double kPrepareShare = 4.0;
+double g_last_draw_end = 0.0, g_last_draw_ms = 0.0;
 
 GLFWwindow* g_window = nullptr;
 std::unique_ptr<pt::App> g_app;
@@ -97,6 +121,11 @@ void frame() {
     g_app->context_restored();
     pt_js_context_rebuilt();
   }
+  const double t0 = emscripten_get_now();
+  if (g_app->preparing() && t0 - g_last_draw_end < kPrepareShare * g_last_draw_ms) {
+    g_app->work(kWorkSliceMs);  // not drawn: the canvas keeps the last frame
+    return;
+  }
   g_app->set_keyboard_enabled(pt_js_canvas_focused() != 0);
   int w = 0, h = 0;
   sync_canvas_size(&w, &h);
@@ -109,6 +138,9 @@ void frame() {
   g_app->frame(w, h, emscripten_get_now());
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  g_last_draw_end = emscripten_get_now();
+  g_last_draw_ms = g_last_draw_end - t0;
+  if (g_app->preparing()) pt_js_pump_work(kWorkSliceMs);
 }
 
 // The browser downloads a Blob of the bytes (copied out of the wasm heap first).
@@ -173,6 +205,12 @@ EMSCRIPTEN_KEEPALIVE const char* pt_stats_json() {
   return g_stats.c_str();
 }
 
+// Loading progress and the sample count, without reading the image back (cheap).
+EMSCRIPTEN_KEEPALIVE const char* pt_load_status() {
+  g_stats = g_app ? g_app->load_status_json() : std::string("null");
+  return g_stats.c_str();
+}
+
 // The current view as URL parameters: cheap (no read-back), for keeping the address current.
 EMSCRIPTEN_KEEPALIVE const char* pt_view_query() {
   g_stats = g_app ? g_app->view_query() : std::string();
@@ -186,6 +224,9 @@ EMSCRIPTEN_KEEPALIVE void pt_set_size(int w, int h) {
 EMSCRIPTEN_KEEPALIVE void pt_set_sample_limit(int n) {
   if (g_app) g_app->set_sample_limit(n);
 }
+
+// A slice of the scene preparation in progress; 1 while more remains (pt_js_pump_work).
+EMSCRIPTEN_KEEPALIVE int pt_work(double budget_ms) { return g_app && g_app->work(budget_ms) ? 1 : 0; }
 
 EMSCRIPTEN_KEEPALIVE int pt_load_scene(const char* path) { return g_app && g_app->load_scene(path) ? 1 : 0; }
 

@@ -1,5 +1,6 @@
 #include "render/packing.h"
 
+#include <climits>
 #include <chrono>
 
 #include "render/image_maps.h"
@@ -55,13 +56,6 @@ void pack_shapes(const Scene& scene, PackedScene& p) {
   }
 }
 
-// What one BVH primitive is: an analytic shape, or triangle `tri` of a shape (a lone
-// Triangle has tri 0).
-struct PrimRef {
-  int shape;
-  int tri;  // -1: analytic
-};
-
 // An analytic shape's primitive: what intersect_<kind> reads of its shape record.
 void pack_analytic_prim(PackedScene& p, const Shape& s, int shape) {
   const int k = p.prims.add();
@@ -82,135 +76,238 @@ void mesh_triangle(const Scene& scene, const Shape& s, size_t tri, glm::vec3 out
   for (int k = 0; k < 3; ++k) out[k] = glm::vec3(s.transform * glm::vec4(m.positions[t[k]], 1.0f));
 }
 
-PackedScene pack_scene(const Scene& scene) {
-  PackedScene p;
-  pack_shapes(scene, p);
-  pack_materials(scene, p);
-  p.motion_bound = std::max(1.0f, scene.camera.shutter);
+PackJob::PackJob(const Scene& scene) : scene_(scene), vertex_base_(scene.shapes.size(), -1), world_(scene.shapes.size()) {
+  pack_shapes(scene, p_);
+  pack_materials(scene, p_);
+  p_.motion_bound = std::max(1.0f, scene.camera.shutter);
+  for (const Shape& s : scene.shapes) {
+    if (s.kind != ShapeKind::Mesh) {
+      ++box_work_;
+      continue;
+    }
+    const MeshData& m = *scene.meshes[size_t(s.mesh)];
+    const bool attributes = !m.normals.empty() || !m.uvs.empty();
+    box_work_ += long(m.positions.size()) * (attributes ? 2 : 1) + long(m.triangles.size());
+  }
+}
 
-  // Bounded primitives and their boxes; unbounded shapes go first in the primitive list.
-  std::vector<PrimRef> refs;
-  std::vector<Aabb> boxes;
-  std::vector<int> vertex_base(scene.shapes.size(), -1);
-  // Each mesh instance's vertices in world space, transformed once: the boxes and the
-  // primitives written after the build both read them.
-  std::vector<std::vector<glm::vec3>> world(scene.shapes.size());
-  for (size_t i = 0; i < scene.shapes.size(); ++i) {
-    const Shape& s = scene.shapes[i];
-    switch (info(s.kind).bvh) {
-      case BvhRole::Unbounded: {
-        pack_analytic_prim(p, s, int(i));
-        ++p.unbounded;
+const char* PackJob::stage() const {
+  switch (stage_) {
+    case Stage::Boxes: return "transforming, bounding";
+    case Stage::Bvh: return "building the BVH";
+    case Stage::Prims: return "writing primitives";
+    case Stage::Nodes: return "writing BVH nodes";
+    case Stage::Done: break;
+  }
+  return "packed";
+}
+
+double PackJob::progress() const {
+  // Shares of the time measured for a 1.3-million-triangle mesh (docs/benchmarks.md).
+  constexpr double kBoxes = 0.2, kBvh = 0.65, kPrims = 0.1;
+  switch (stage_) {
+    case Stage::Boxes: return kBoxes * double(box_done_) / double(std::max(1L, box_work_));
+    case Stage::Bvh: return kBoxes + kBvh * builder_->progress();
+    case Stage::Prims: return kBoxes + kBvh + kPrims * double(at_) / double(std::max<size_t>(1, bvh_.order.size()));
+    case Stage::Nodes: return kBoxes + kBvh + kPrims + (1.0 - kBoxes - kBvh - kPrims) * double(at_) / double(std::max<size_t>(1, bvh_.nodes.size()));
+    case Stage::Done: break;
+  }
+  return 1.0;
+}
+
+bool PackJob::run(long work) {
+  while (work > 0 && stage_ != Stage::Done) {
+    switch (stage_) {
+      case Stage::Boxes: {
+        boxes_step(work);
+        if (shape_ < scene_.shapes.size()) break;
+        // Indices travel as floats: exact up to 2^24.
+        if (refs_.size() + size_t(p_.unbounded) >= (1u << 24) || scene_.shapes.size() >= (1u << 24) || p_.vertices.count() >= (1 << 24))
+          throw InputError(scene_.path, 0, "the scene has more than 16,777,216 primitives, shapes or mesh vertices");
+        BvhBuildOptions opt;
+        opt.max_depth = kBvhStackSize + 1;
+        builder_ = std::make_unique<BvhBuilder>(boxes_, opt);
+        stage_ = Stage::Bvh;
         break;
       }
-      case BvhRole::Analytic: {
-        Aabb b;
-        if (s.kind == ShapeKind::Sphere) {
-          for (const glm::vec3 c : {s.a, s.a + s.velocity * p.motion_bound}) {
-            b.grow(c - glm::vec3(s.radius));
-            b.grow(c + glm::vec3(s.radius));
-          }
-        } else {
-          b.grow(s.a);
-          b.grow(s.b);
+      case Stage::Bvh: {
+        const auto t0 = std::chrono::steady_clock::now();
+        const long before = builder_->work_done();
+        const bool built = builder_->run(work);
+        p_.bvh_build_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        work -= builder_->work_done() - before;
+        if (!built) break;
+        bvh_ = builder_->take();
+        builder_.reset();
+        p_.bvh_depth = bvh_.depth;
+        p_.prims.reserve(p_.unbounded + int(refs_.size()));
+        at_ = 0;
+        stage_ = Stage::Prims;
+        break;
+      }
+      case Stage::Prims: {
+        prims_step(work);
+        if (at_ < bvh_.order.size()) break;
+        p_.nodes.reserve(int(bvh_.nodes.size()));
+        at_ = 0;
+        stage_ = Stage::Nodes;
+        break;
+      }
+      case Stage::Nodes: {
+        nodes_step(work);
+        if (at_ == bvh_.nodes.size()) stage_ = Stage::Done;
+        break;
+      }
+      case Stage::Done: break;
+    }
+  }
+  return stage_ == Stage::Done;
+}
+
+void PackJob::boxes_step(long& work) {
+  for (; shape_ < scene_.shapes.size() && work > 0; ++shape_, pass_ = 0, at_ = 0) {
+    const Shape& s = scene_.shapes[shape_];
+    const int i = int(shape_);
+    if (s.kind != ShapeKind::Mesh) {
+      --work;
+      ++box_done_;
+      switch (info(s.kind).bvh) {
+        case BvhRole::Unbounded: {
+          pack_analytic_prim(p_, s, i);
+          ++p_.unbounded;
+          break;
         }
-        refs.push_back({int(i), -1});
-        boxes.push_back(b.padded());
-        break;
-      }
-      case BvhRole::Triangles: {
-        if (s.kind == ShapeKind::Triangle) {
+        case BvhRole::Analytic: {
+          Aabb b;
+          if (s.kind == ShapeKind::Sphere) {
+            for (const glm::vec3 c : {s.a, s.a + s.velocity * p_.motion_bound}) {
+              b.grow(c - glm::vec3(s.radius));
+              b.grow(c + glm::vec3(s.radius));
+            }
+          } else {
+            b.grow(s.a);
+            b.grow(s.b);
+          }
+          refs_.push_back({i, -1});
+          boxes_.push_back(b.padded());
+          break;
+        }
+        case BvhRole::Triangles: {  // a lone Triangle
           const glm::vec3 v[3] = {s.a, s.b, s.c};
           if (degenerate(v)) break;
           Aabb b;
           for (const glm::vec3& q : v) b.grow(q);
-          refs.push_back({int(i), 0});
-          boxes.push_back(b.padded());
+          refs_.push_back({i, 0});
+          boxes_.push_back(b.padded());
           break;
         }
-        const MeshData& m = *scene.meshes[size_t(s.mesh)];
-        if (!m.normals.empty() || !m.uvs.empty()) {
-          // World-space shading normals (inverse transpose) and uv, one record per vertex.
-          vertex_base[i] = p.vertices.count();
-          const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(s.transform)));
-          p.vertices.reserve(p.vertices.count() + int(m.positions.size()));
-          for (size_t v = 0; v < m.positions.size(); ++v) {
-            const int k = p.vertices.add();
-            if (!m.normals.empty()) {
-              const glm::vec3 n = nm * m.normals[v];
-              const float len = glm::length(n);
-              if (len > 0.0f && std::isfinite(len)) p.vertices.set(k, vertex_rec::normal, n / len);
-            }
-            if (!m.uvs.empty()) {
-              p.vertices.set(k, vertex_rec::u, m.uvs[v].x);
-              p.vertices.set(k, vertex_rec::v, m.uvs[v].y);
-            }
-          }
-        }
-        std::vector<glm::vec3>& w = world[i];
-        w.reserve(m.positions.size());
-        for (const glm::vec3& q : m.positions) w.emplace_back(s.transform * glm::vec4(q, 1.0f));
-        for (size_t t = 0; t < m.triangles.size(); ++t) {
-          const glm::uvec3 tri = m.triangles[t];
-          const glm::vec3 v[3] = {w[tri.x], w[tri.y], w[tri.z]};
-          if (degenerate(v)) continue;
-          Aabb b;
-          for (const glm::vec3& q : v) b.grow(q);
-          refs.push_back({int(i), int(t)});
-          boxes.push_back(b.padded());
-        }
-        break;
+        case BvhRole::None: break;
       }
-      case BvhRole::None: break;
-    }
-  }
-  // Indices travel as floats: exact up to 2^24.
-  if (refs.size() + size_t(p.unbounded) >= (1u << 24) || scene.shapes.size() >= (1u << 24) || p.vertices.count() >= (1 << 24))
-    throw InputError(scene.path, 0, "the scene has more than 16,777,216 primitives, shapes or mesh vertices");
-
-  const auto t0 = std::chrono::steady_clock::now();
-  BvhBuildOptions opt;
-  opt.max_depth = kBvhStackSize + 1;
-  const Bvh bvh = build_bvh(boxes, opt);
-  p.bvh_build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  p.bvh_depth = bvh.depth;
-
-  p.prims.reserve(p.unbounded + int(refs.size()));
-  for (int r : bvh.order) {
-    const PrimRef& ref = refs[size_t(r)];
-    const Shape& s = scene.shapes[size_t(ref.shape)];
-    if (ref.tri < 0) {
-      pack_analytic_prim(p, s, ref.shape);
       continue;
     }
-    const int k = p.prims.add();
+    // A mesh instance, in three passes that each stop where the work runs out.
+    const MeshData& m = *scene_.meshes[size_t(s.mesh)];
+    const auto chunk = [&](size_t total) {
+      const size_t end = at_ + size_t(std::min<long>(long(total - at_), work));
+      work -= long(end - at_);
+      box_done_ += long(end - at_);
+      return end;
+    };
+    if (pass_ == 0) {
+      if (!m.normals.empty() || !m.uvs.empty()) {
+        // World-space shading normals (inverse transpose) and uv, one record per vertex.
+        if (at_ == 0) {
+          vertex_base_[shape_] = p_.vertices.count();
+          p_.vertices.reserve(p_.vertices.count() + int(m.positions.size()));
+        }
+        const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(s.transform)));
+        for (const size_t end = chunk(m.positions.size()); at_ < end; ++at_) {
+          const int k = p_.vertices.add();
+          if (!m.normals.empty()) {
+            const glm::vec3 n = nm * m.normals[at_];
+            const float len = glm::length(n);
+            if (len > 0.0f && std::isfinite(len)) p_.vertices.set(k, vertex_rec::normal, n / len);
+          }
+          if (!m.uvs.empty()) {
+            p_.vertices.set(k, vertex_rec::u, m.uvs[at_].x);
+            p_.vertices.set(k, vertex_rec::v, m.uvs[at_].y);
+          }
+        }
+        if (at_ < m.positions.size()) return;
+      }
+      pass_ = 1;
+      at_ = 0;
+    }
+    std::vector<glm::vec3>& w = world_[shape_];
+    if (pass_ == 1) {
+      if (at_ == 0) w.reserve(m.positions.size());
+      for (const size_t end = chunk(m.positions.size()); at_ < end; ++at_) w.emplace_back(s.transform * glm::vec4(m.positions[at_], 1.0f));
+      if (at_ < m.positions.size()) return;
+      pass_ = 2;
+      at_ = 0;
+    }
+    for (const size_t end = chunk(m.triangles.size()); at_ < end; ++at_) {
+      const glm::uvec3 tri = m.triangles[at_];
+      const glm::vec3 v[3] = {w[tri.x], w[tri.y], w[tri.z]};
+      if (degenerate(v)) continue;
+      Aabb b;
+      for (const glm::vec3& q : v) b.grow(q);
+      refs_.push_back({i, int(at_)});
+      boxes_.push_back(b.padded());
+    }
+    if (at_ < m.triangles.size()) return;
+  }
+}
+
+void PackJob::prims_step(long& work) {
+  for (const size_t end = at_ + size_t(std::min<long>(long(bvh_.order.size() - at_), work)); at_ < end; ++at_, --work) {
+    const PrimRef& ref = refs_[size_t(bvh_.order[at_])];
+    const Shape& s = scene_.shapes[size_t(ref.shape)];
+    if (ref.tri < 0) {
+      pack_analytic_prim(p_, s, ref.shape);
+      continue;
+    }
+    const int k = p_.prims.add();
     glm::vec3 v[3] = {s.a, s.b, s.c};
     glm::vec3 attr(-1.0f);
     if (s.kind == ShapeKind::Mesh) {
-      const glm::uvec3 tri = scene.meshes[size_t(s.mesh)]->triangles[size_t(ref.tri)];
-      const std::vector<glm::vec3>& w = world[size_t(ref.shape)];
+      const glm::uvec3 tri = scene_.meshes[size_t(s.mesh)]->triangles[size_t(ref.tri)];
+      const std::vector<glm::vec3>& w = world_[size_t(ref.shape)];
       v[0] = w[tri.x];
       v[1] = w[tri.y];
       v[2] = w[tri.z];
-      if (vertex_base[size_t(ref.shape)] >= 0)
-        attr = glm::vec3(tri) + float(vertex_base[size_t(ref.shape)]);
+      if (vertex_base_[size_t(ref.shape)] >= 0) attr = glm::vec3(tri) + float(vertex_base_[size_t(ref.shape)]);
     }
-    p.prims.set(k, prim_rec::tag, ref.shape);
-    p.prims.set(k, prim_rec::kind, triangle_edge_order(v[0], v[1], v[2]));
-    p.prims.set(k, prim_rec::v0, v[0]);
-    p.prims.set(k, prim_rec::v1, v[1]);
-    p.prims.set(k, prim_rec::v2, v[2]);
-    p.prims.set(k, prim_rec::attr, attr);
+    p_.prims.set(k, prim_rec::tag, ref.shape);
+    p_.prims.set(k, prim_rec::kind, triangle_edge_order(v[0], v[1], v[2]));
+    p_.prims.set(k, prim_rec::v0, v[0]);
+    p_.prims.set(k, prim_rec::v1, v[1]);
+    p_.prims.set(k, prim_rec::v2, v[2]);
+    p_.prims.set(k, prim_rec::attr, attr);
   }
-  p.nodes.reserve(int(bvh.nodes.size()));
-  for (const BvhNode& n : bvh.nodes) {
-    const int k = p.nodes.add();
-    p.nodes.set(k, node_rec::lo, n.box.lo);
-    p.nodes.set(k, node_rec::hi, n.box.hi);
-    p.nodes.set(k, node_rec::first, n.count > 0 ? n.first + p.unbounded : n.first);
-    p.nodes.set(k, node_rec::count, n.count);
+}
+
+void PackJob::nodes_step(long& work) {
+  for (const size_t end = at_ + size_t(std::min<long>(long(bvh_.nodes.size() - at_), work)); at_ < end; ++at_, --work) {
+    const BvhNode& n = bvh_.nodes[at_];
+    const int k = p_.nodes.add();
+    p_.nodes.set(k, node_rec::lo, n.box.lo);
+    p_.nodes.set(k, node_rec::hi, n.box.hi);
+    p_.nodes.set(k, node_rec::first, n.count > 0 ? n.first + p_.unbounded : n.first);
+    p_.nodes.set(k, node_rec::count, n.count);
   }
-  return p;
+}
+
+PackedScene PackJob::take() {
+  world_.clear();
+  return std::move(p_);
+}
+
+PackedScene pack_scene(const Scene& scene) {
+  PackJob job(scene);
+  while (!job.run(LONG_MAX)) {  // (long is 32 bits in wasm)
+  }
+  return job.take();
 }
 
 }  // namespace pt

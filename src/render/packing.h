@@ -1,6 +1,8 @@
 // Scene -> the record buffers of render/records.h, including the BVH over every bounded
 // primitive (accel/bvh.h) and the primitives in its leaf order.
 #pragma once
+#include <memory>
+
 #include "accel/bvh.h"
 #include "render/records.h"
 #include "scene/scene.h"
@@ -24,7 +26,53 @@ struct PackedScene {
 // rebuilt with median splits below that depth (see build_bvh's max_depth).
 inline constexpr int kBvhStackSize = 48;
 
-PackedScene pack_scene(const Scene& scene);
+PackedScene pack_scene(const Scene& scene);  // runs a PackJob to completion
+
+// pack_scene in slices, so that a page packs a large scene a few milliseconds at a time
+// while the previous one keeps rendering: run(work) does at most about `work` units (one
+// unit: one vertex, triangle, BVH primitive visit, record) and returns true when the
+// scene is packed. The result does not depend on the slicing. `scene` must outlive it.
+class PackJob {
+ public:
+  explicit PackJob(const Scene& scene);
+  PackJob(const PackJob&) = delete;  // its BvhBuilder refers to boxes_
+  PackJob& operator=(const PackJob&) = delete;
+  bool run(long work);
+  bool done() const { return stage_ == Stage::Done; }
+  const char* stage() const;  // what it is doing, for a progress line
+  double progress() const;    // 0..1, by the stages' typical shares of the time
+  PackedScene take();         // once done()
+  const std::vector<Aabb>& boxes() const { return boxes_; }  // the BVH's input (tests)
+
+ private:
+  enum class Stage { Boxes, Bvh, Prims, Nodes, Done };
+  // What one BVH primitive is: an analytic shape, or triangle `tri` of a shape (a lone
+  // Triangle has tri 0).
+  struct PrimRef {
+    int shape;
+    int tri;  // -1: analytic
+  };
+  void boxes_step(long& work);
+  void prims_step(long& work);
+  void nodes_step(long& work);
+
+  const Scene& scene_;
+  PackedScene p_;
+  Stage stage_ = Stage::Boxes;
+  // Bounded primitives and their boxes; unbounded shapes go first in the primitive list.
+  std::vector<PrimRef> refs_;
+  std::vector<Aabb> boxes_;
+  std::vector<int> vertex_base_;
+  // Each mesh instance's vertices in world space, transformed once: the boxes and the
+  // primitives written after the build both read them.
+  std::vector<std::vector<glm::vec3>> world_;
+  size_t shape_ = 0;  // Boxes: the shape in progress,
+  int pass_ = 0;      // its pass (a mesh: vertex attributes, world positions, triangles)
+  size_t at_ = 0;     // and the next item of that pass; Prims and Nodes: the next record
+  long box_work_ = 0, box_done_ = 0;
+  std::unique_ptr<BvhBuilder> builder_;
+  Bvh bvh_;
+};
 
 // World-space vertices of a mesh instance's triangle.
 void mesh_triangle(const Scene& scene, const Shape& s, size_t tri, glm::vec3 out[3]);

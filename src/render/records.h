@@ -126,6 +126,7 @@ class RecordBuffer {
   int rows() const;  // at least 1
   // Padded to rows() * kDataWidth texels of 4 floats.
   std::vector<float> texels() const;
+  const std::vector<float>& raw() const { return data_; }  // count() records, not padded
 
  private:
   int texels_;

@@ -6,6 +6,7 @@
 #include "render/environment.h"
 #include "render/image_maps.h"
 #include "render/packing.h"
+#include "render/staged_scene.h"
 
 namespace pt {
 namespace {
@@ -102,16 +103,12 @@ void Renderer::update_sh() {
   sh_valid_ = true;
 }
 
-void Renderer::set_scene(const Scene& scene) {
+void Renderer::set_scene(const Scene& scene) { set_scene(scene, pack_scene(scene)); }
+
+void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* staged) {
   // Everything that can fail (packing, limits, image maps, compiling) happens before any
   // state changes: a scene that cannot be rendered leaves the previous one and its samples.
-  const PackedScene p = pack_scene(scene);
-  limits_.require_texture(kDataWidth, p.shapes.rows(), "the scene's objects (" + std::to_string(p.shapes.count()) + ")");
-  limits_.require_texture(kDataWidth, p.materials.rows(), "the scene's materials");
-  limits_.require_texture(kDataWidth, p.lights.rows(), "the scene's lights");
-  limits_.require_texture(kDataWidth, p.nodes.rows(), "the scene's BVH (" + std::to_string(p.nodes.count()) + " nodes)");
-  limits_.require_texture(kDataWidth, p.prims.rows(), "the scene's primitives (" + std::to_string(p.prims.count()) + ")");
-  limits_.require_texture(kDataWidth, p.vertices.rows(), "the scene's mesh vertices");
+  if (!staged || !staged->done()) require_scene_textures(limits_, p);  // (a StagedScene checked them)
   if (scene.environment.map)
     limits_.require_texture(scene.environment.map->width + 1, scene.environment.map->height + 1, "the environment map");
   const Features old = features_;
@@ -132,12 +129,21 @@ void Renderer::set_scene(const Scene& scene) {
     sh_valid_ = false;
   env_ = e;
   update_sh();
-  shape_tex_ = upload(p.shapes);
-  material_tex_ = upload(p.materials);
-  light_tex_ = upload(p.lights);
-  node_tex_ = upload(p.nodes);
-  prim_tex_ = upload(p.prims);
-  vertex_tex_ = upload(p.vertices);
+  if (staged && staged->done()) {
+    shape_tex_ = std::move(staged->shapes);
+    material_tex_ = std::move(staged->materials);
+    light_tex_ = std::move(staged->lights);
+    node_tex_ = std::move(staged->nodes);
+    prim_tex_ = std::move(staged->prims);
+    vertex_tex_ = std::move(staged->vertices);
+  } else {
+    shape_tex_ = upload(p.shapes);
+    material_tex_ = upload(p.materials);
+    light_tex_ = upload(p.lights);
+    node_tex_ = upload(p.nodes);
+    prim_tex_ = upload(p.prims);
+    vertex_tex_ = upload(p.vertices);
+  }
   if (textured) {
     maps_ = TextureArray(maps.width, maps.height, maps.layers, maps.texels.data());
     uv_tex_ = upload(pack_uvs(scene));

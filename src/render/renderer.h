@@ -18,6 +18,9 @@
 
 namespace pt {
 
+struct PackedScene;
+class StagedScene;
+
 struct RenderSettings {
   int max_bounces = 8;   // scattering events per path (seed: 8, range 1..16)
   int spp_per_pass = 1;  // samples per pixel in one draw (fixed for a whole sweep)
@@ -41,6 +44,10 @@ class Renderer {
 
   // Uploads the scene's data; compiles a program only for a feature set not seen before.
   void set_scene(const Scene& scene);
+  // The same with the scene already packed (render/packing.h: a page packs a large scene
+  // in slices across frames, then swaps it in here at once), and its record textures
+  // uploaded ahead when `staged` is given and done (render/staged_scene.h; taken from it).
+  void set_scene(const Scene& scene, const PackedScene& packed, StagedScene* staged = nullptr);
   // Starts building the program for the scene's kinds without waiting for the driver;
   // true when set_scene(scene) will not block on it (always, without
   // KHR_parallel_shader_compile). A page polls this once a frame and keeps drawing.

@@ -6,12 +6,15 @@
 // folder and checks: the served scene loads; clicking an object selects it (and the sky
 // clears it); dragging a value of the selection re-renders without compiling a program;
 // an edit of the scene file, and of a mesh it references, re-renders within a second and
-// keeps the camera; a broken edit shows file:line and the last scene keeps rendering;
+// keeps the camera; a broken edit shows file:line and the last scene keeps rendering, its
+// accumulation going on from where it was;
 // keys move the camera only with the canvas focused and no modifier held; a scene dropped
 // on the page (synthetic drop with a DataTransfer) and one chosen with the file picker
 // load; the resolution-scale slider changes the render size; the camera moving renders
 // at reduced size and refines at full size; losing and restoring the WebGL context
 // (WEBGL_lose_context) resumes the same image; the device pixel ratio sizes the canvas;
+// loading a 1.3-million-triangle scene keeps the animation frames coming (its longest gap
+// is bounded) and shows its progress while the previous scene keeps rendering;
 // build/site (tools/site.sh) served from a sub-path renders. Prints the UI frame rate
 // while rendering (and the GPU time per frame with EXT_disjoint_timer_query_webgl2).
 // Screenshots go to the out folder. 'ok - NAME' / 'not ok - NAME: why', then a summary.
@@ -33,6 +36,12 @@ for (let i = 2; i < process.argv.length; i += 2) {
   opt[key] = process.argv[i + 1];
 }
 const webDir = resolve(repo, opt.web), siteDir = resolve(repo, opt.site), outDir = resolve(repo, opt.out);
+// Loading scenes/bench/million.xml: the longest gap between animation frames (measured
+// 0.7-0.9 s on the 2-core machine, most of it reading the scene, whose generated mesh is
+// not sliced; the blocking build it replaces gave 5+ s), and the whole load (9-37 s
+// there, the machine shared; docs/benchmarks.md).
+const kLargeLoadGapMs = 2500;
+const kLargeLoadMs = 60000;
 const shot = (page, name) => page.screenshot({ path: join(outDir, `app-${name}.png`) });
 
 const results = [];
@@ -156,16 +165,29 @@ async function devChecks(context, url, dir) {
   check("an edited mesh re-renders the scene", meshMs < 1000 && bigger.mean[0] < red.mean[0] * 0.95,
         `reload ${meshMs} ms, red ${red.mean[0]} -> ${bigger.mean[0]}`);
 
-  // A broken edit: the error with file and line, the last scene keeps rendering.
-  put(join(dir, "live.xml"), liveScene("1 0 0").replace('radius="1.5"', 'radius="-1"'));
-  await until(page, () => typeof window.ptStats().error === "string", null, 10000).catch(() => {});
-  await page.evaluate(() => window.ptSetLimit(8));
-  await until(page, () => window.ptStats().samples >= 8, null, 60000).catch(() => {});
+  // A broken edit: the error with file and line; the last scene keeps rendering and keeps
+  // its samples (the accumulation goes on from where it was, not restarted), and its image
+  // changes only by converging. The broken file also turns the sky green, which would show
+  // if any of it were applied.
+  await page.evaluate(() => window.ptSetLimit(0));
+  await until(page, () => window.ptLoadStatus().samples >= 12);
+  const kept = await stats(page);
+  put(join(dir, "live.xml"), liveScene("0 1 0").replace('radius="1.5"', 'radius="-1"'));
+  await until(page, () => typeof window.ptLoadStatus().error === "string", null, 10000).catch(() => {});
+  const atError = await page.evaluate(() => window.ptLoadStatus());
+  await until(page, (n) => window.ptLoadStatus().samples >= n, atError.samples + 12, 60000).catch(() => {});
   const broken = await stats(page);
+  await page.evaluate(() => window.ptSetLimit(8));
   await shot(page, "broken-edit");
+  const drift = Math.max(...broken.mean.map((v, k) => Math.abs(v - kept.mean[k]) / Math.max(kept.mean[k], 1e-3)));
+  console.log(`# broken edit: samples ${kept.samples} before, ${atError.samples} when the error showed, ${broken.samples} after; ` +
+              `mean ${kept.mean.map((v) => v.toFixed(4)).join(" ")} -> ${broken.mean.map((v) => v.toFixed(4)).join(" ")}`);
   check("a broken edit shows file:line and keeps the last scene",
-        /live\.xml:5: <Sphere>/.test(broken.error ?? "") && broken.loads === bigger.loads && broken.samples >= 8,
-        `error ${broken.error}, loads ${bigger.loads} -> ${broken.loads}, samples ${broken.samples}`);
+        /live\.xml:5: <Sphere>/.test(broken.error ?? "") && broken.loads === bigger.loads && broken.scene === "/scenes/live.xml",
+        `error ${broken.error}, loads ${bigger.loads} -> ${broken.loads}, scene ${broken.scene}`);
+  check("a failed reload keeps the accumulation: samples go on from where they were, the image only converges",
+        atError.samples >= kept.samples && broken.samples >= atError.samples + 12 && drift < 0.05 && broken.mean[1] < 2 * kept.mean[1] + 0.01,
+        `samples ${kept.samples} -> ${atError.samples} (error) -> ${broken.samples}, mean ${kept.mean} -> ${broken.mean} (drift ${drift.toFixed(3)})`);
   put(join(dir, "live.xml"), liveScene("0.5 0.5 0.5"));
   await until(page, (n) => window.ptStats().loads > n && !window.ptStats().error, broken.loads, 10000).catch(() => {});
   check("fixing the edit loads it again", (await stats(page)).error === null);
@@ -304,6 +326,64 @@ async function responsiveness(context, url) {
   await page.close();
 }
 
+// Loading a large scene (scenes/bench/million.xml: 1,310,720 triangles, its BVH built in
+// slices across frames) while another one renders: the animation frames keep coming (the
+// longest gap between two is bounded), the stage and progress are shown, the previous
+// scene keeps accumulating until the new one is ready, and the new one renders.
+async function largeLoad(context, url) {
+  const errors = [];
+  const page = await openPage(context, `${url}?scene=reference/scene2.xml&size=96x64&limit=0`, errors);
+  await until(page, () => window.ptLoadStatus().samples >= 2 && !window.ptLoadStatus().loading);
+  const result = page.evaluate(() => new Promise((done) => {
+    const seen = [];  // per frame while loading: stage, progress, the shown scene and its samples
+    let worst = 0, frames = 0, last = performance.now(), swapMs = -1, worstAfter = 0;
+    const t0 = last;
+    const before = window.ptLoadStatus();
+    window.ptLoadScene("/scenes/bench/million.xml");
+    const tick = () => {
+      const now = performance.now();
+      // Up to the swap (this frame included): the load; after it, the new scene's first
+      // draws, which a software GPU makes slow (reported, not bounded here).
+      if (swapMs < 0) worst = Math.max(worst, now - last);
+      else worstAfter = Math.max(worstAfter, now - last);
+      last = now;
+      frames++;
+      const s = window.ptLoadStatus();
+      if (s.loading) seen.push({ stage: s.loading.stage, progress: s.loading.progress, scene: s.scene, samples: s.samples });
+      if (swapMs < 0 && s.scene.endsWith("million.xml")) swapMs = now - t0;
+      if ((s.scene.endsWith("million.xml") && s.samples >= 1) || (s.error && !s.loading) || now - t0 > 120000)
+        done({ worst, worstAfter, frames, ms: now - t0, swapMs, seen, before, after: s });
+      else requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  }));
+  // The panel while the BVH is being built (the screenshot itself costs the page a frame).
+  await until(page, () => { const l = window.ptLoadStatus().loading; return l && l.progress > 0.4; }, null, 120000).catch(() => {});
+  await shot(page, "large-loading");
+  const r = await result;
+  const s = await stats(page);
+  await shot(page, "large-loaded");
+  const building = r.seen.filter((x) => x.stage === "building the BVH");
+  const increasing = r.seen.every((x, i) => i === 0 || x.progress >= r.seen[i - 1].progress);
+  const oldSamples = r.seen.filter((x) => x.scene === r.before.scene).reduce((m, x) => Math.max(m, x.samples), -1);
+  console.log(`# million.xml shown ${r.swapMs.toFixed(0)} ms after the request (the longest gap between animation frames ${r.worst.toFixed(0)} ms), ` +
+              `its first samples after ${r.ms.toFixed(0)} ms (${r.frames} animation frames; the longest gap after the swap ${r.worstAfter.toFixed(0)} ms); ` +
+              `packed in ${s.lastLoad.slices} slices, ${s.lastLoad.packWorkMs.toFixed(0)} ms of work, the longest slice ` +
+              `${s.lastLoad.longestSliceMs.toFixed(0)} ms; BVH ${s.lastLoad.bvhBuildMs.toFixed(0)} ms of work; ready ${s.lastLoad.ms.toFixed(0)} ms ` +
+              `after the request; scene2 went from ${r.before.samples} to ${oldSamples} samples meanwhile`);
+  check("loading 1.3 M triangles keeps the animation frames coming", r.worst < kLargeLoadGapMs,
+        `longest gap between animation frames ${r.worst.toFixed(0)} ms (bound ${kLargeLoadGapMs})`);
+  check("the loading stage and progress are shown", building.length >= 5 && building.some((x) => x.progress > 0.2 && x.progress < 0.8) && increasing,
+        `${r.seen.length} frames while loading, ${building.length} of them building the BVH; increasing ${increasing}`);
+  check("the previous scene keeps rendering while the new one loads", oldSamples > r.before.samples,
+        `scene2 samples ${r.before.samples} -> ${oldSamples}`);
+  check("the large scene renders once loaded", s.scene === "/scenes/bench/million.xml" && !s.error && s.samples >= 1 &&
+        s.mean[0] > 0 && s.lastLoad.primitives === 1310721 && r.ms < kLargeLoadMs,
+        JSON.stringify({ scene: s.scene, error: s.error, samples: s.samples, mean: s.mean, lastLoad: s.lastLoad, ms: r.ms }));
+  if (errors.length) check("no console or page errors (large load page)", false, errors.join(" | "));
+  await page.close();
+}
+
 async function siteChecks(context) {
   if (!existsSync(join(siteDir, "index.html"))) return check("the site renders from a sub-path", false, `${siteDir} missing: run 'bash tools/site.sh'`);
   const server = await startServer([siteDir, "0", "--base", "/pathtracer/"]);
@@ -342,7 +422,12 @@ async function main() {
     let context = await launch({ viewport: { width: 960, height: 640 } });
     await devChecks(context, server.url, scenes);
     const plain = await startServer([webDir, "0"]);  // scene2 is not in the dev server's temporary folder
-    try { await responsiveness(context, plain.url); } finally { plain.child.kill(); }
+    try {
+      await responsiveness(context, plain.url);
+      await largeLoad(context, plain.url);
+    } finally {
+      plain.child.kill();
+    }
     await siteChecks(context);
     await context.close();
     context = await launch({ viewport: { width: 640, height: 400 }, deviceScaleFactor: 2 });

@@ -1,0 +1,82 @@
+// A scene's record textures uploaded in bands of rows (render/staged_scene.h, how the page
+// spreads a large scene's upload over frames) hold exactly the records, padding included,
+// and the scene renders bit for bit as one uploaded at once.
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "gl_context.h"
+#include "render/packing.h"
+#include "render/renderer.h"
+#include "render/staged_scene.h"
+#include "scene/xml_loader.h"
+
+using namespace pt;
+
+namespace {
+
+const char* kScene = R"(<SceneLevel><Camera position="0 0 3" yaw="90" pitch="0"/>
+  <Light position="1 2 2" radius="0.3" color="1 1 1" intensity="40"/><Objects>
+  <Sphere center="1.5 0 0" radius="0.4"><Diffuse/></Sphere>
+  <Plane normal="0 1 0" d="-1"><Attenuate color="0.7 0.7 0.7"><Diffuse/></Attenuate></Plane>
+  <Mesh generate="icosphere" level="5" displace="0.05"><Attenuate color="0.8 0.5 0.3"><Diffuse/></Attenuate></Mesh>
+</Objects></SceneLevel>)";
+
+std::vector<float> read_texture(const Texture& t) {
+  Framebuffer f(t);
+  REQUIRE(f.complete());
+  std::vector<float> out(size_t(t.width()) * size_t(t.height()) * 4);
+  glReadPixels(0, 0, t.width(), t.height(), GL_RGBA, GL_FLOAT, out.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return out;
+}
+
+std::vector<float> render(Renderer& r, int sweeps) {
+  r.resize(48, 32);
+  r.restart();
+  for (int n = 0; n < sweeps;) n += r.step() > 0 ? 1 : 0;
+  return r.read_radiance();
+}
+
+}  // namespace
+
+TEST_CASE("a scene uploaded in bands of rows holds its records and renders as one uploaded at once", "[gpu][staging]") {
+  test_gl();
+  const Scene scene = load_scene_text(kScene, "staged.xml", false);
+  const PackedScene p = pack_scene(scene);
+  REQUIRE(p.prims.rows() > 3);  // several bands, and a last row partly filled
+  Renderer r;
+  for (int rows : {1, 3, 1000}) {
+    INFO("bands of " << rows << " rows");
+    StagedScene staged(r.limits(), p);
+    int calls = 1;
+    while (!staged.upload(rows)) ++calls;
+    CHECK(staged.progress() == 1.0);
+    if (rows == 1) CHECK(calls == p.shapes.rows() + p.materials.rows() + p.lights.rows() + p.nodes.rows() + p.prims.rows() + p.vertices.rows());
+    CHECK(read_texture(staged.shapes) == p.shapes.texels());
+    CHECK(read_texture(staged.materials) == p.materials.texels());
+    CHECK(read_texture(staged.lights) == p.lights.texels());
+    CHECK(read_texture(staged.nodes) == p.nodes.texels());
+    CHECK(read_texture(staged.prims) == p.prims.texels());
+    CHECK(read_texture(staged.vertices) == p.vertices.texels());
+  }
+  r.set_scene(scene);
+  const std::vector<float> once = render(r, 2);
+  StagedScene staged(r.limits(), p);
+  while (!staged.upload(2)) {
+  }
+  Renderer r2;
+  r2.set_scene(scene, p, &staged);
+  CHECK(staged.prims.id() == 0u);  // taken by the renderer
+  CHECK(render(r2, 2) == once);
+}
+
+TEST_CASE("staging a scene beyond the GPU's texture size throws before making anything", "[gpu][staging]") {
+  test_gl();
+  const Scene scene = load_scene_text(kScene, "staged.xml", false);
+  const PackedScene p = pack_scene(scene);
+  Renderer r;
+  GlLimits small = r.limits();
+  small.max_texture_size = kDataWidth / 2;  // every record texture is kDataWidth wide
+  CHECK_THROWS_WITH(StagedScene(small, p), Catch::Contains("the scene's objects") && Catch::Contains("GL_MAX_TEXTURE_SIZE"));
+}
