@@ -11,19 +11,34 @@
 #include "core/file_io.h"
 #include "scene/xml_loader.h"
 #include "shadergen/shadergen.h"
+#include "gl_context.h"
+#include "scene_builders.h"
 #include "test_paths.h"
 
 using namespace pt;
 
-TEST_CASE("every example in docs/scene-format.md loads", "[loader][docs]") {
-  const std::string path = repo_path("docs/scene-format.md");
-  const auto text = read_file(path);
+namespace {
+
+// The ```xml blocks of docs/scene-format.md.
+std::vector<std::string> format_examples() {
+  const auto text = read_file(repo_path("docs/scene-format.md"));
   REQUIRE(text);
-  int examples = 0;
+  std::vector<std::string> out;
   for (size_t at = text->find("```xml\n"); at != std::string::npos; at = text->find("```xml\n", at)) {
     const size_t begin = at + 7, end = text->find("```", begin);
     REQUIRE(end != std::string::npos);
-    const std::string xml = text->substr(begin, end - begin);
+    out.push_back(text->substr(begin, end - begin));
+    at = end + 3;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("every example in docs/scene-format.md loads", "[loader][docs]") {
+  const std::string path = repo_path("docs/scene-format.md");
+  int examples = 0;
+  for (const std::string& xml : format_examples()) {
     INFO("example " << examples + 1 << ":\n" << xml);
     try {
       load_scene_text(xml, path);
@@ -31,9 +46,26 @@ TEST_CASE("every example in docs/scene-format.md loads", "[loader][docs]") {
       FAIL(e.what());
     }
     ++examples;
-    at = end + 3;
   }
-  CHECK(examples >= 7);  // one per section
+  CHECK(examples >= 8);  // one per section
+}
+
+TEST_CASE("every example in docs/scene-format.md renders without NaN and not black", "[gpu][docs]") {
+  test_gl();
+  int examples = 0;
+  for (const std::string& xml : format_examples()) {
+    const Scene scene = load_scene_text(xml, repo_path("docs/scene-format.md"));
+    INFO("example " << examples + 1 << ":\n" << xml);
+    RenderSettings st;
+    if (scene.render.mode) st.mode = *scene.render.mode;
+    const RenderResult r = render_scene(scene, 24, 16, 2, st);
+    double sum = 0.0;
+    for (size_t i = 0; i < r.rgba.size(); i += 4) sum += r.rgba[i] + r.rgba[i + 1] + r.rgba[i + 2];
+    CHECK(r.counters.bad_samples == 0);
+    CHECK(sum > 0.0);
+    ++examples;
+  }
+  CHECK(examples >= 8);
 }
 
 // The table of shipped scenes in docs/scenes.md: each scene's kinds and the size of the

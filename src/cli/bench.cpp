@@ -40,7 +40,7 @@ int run_bench(const Options& o) {
   std::printf("GL: %s\n", gl.description().c_str());
   Renderer r;
   r.resize(o.width, o.height);
-  RenderSettings settings = o.settings;
+  RenderSettings settings = settings_for(o, scene);
   settings.sample_limit = 0;
   r.set_settings(settings);
   r.set_scene(scene);

@@ -36,8 +36,7 @@ int run_render(const Options& o) {
   std::printf("GL: %s\n", gl.description().c_str());
   Renderer r;
   r.resize(o.width, o.height);
-  RenderSettings settings = o.settings;
-  settings.sample_limit = o.spp;
+  RenderSettings settings = settings_for(o, scene);
   settings.spp_per_pass = o.per_pass > 0 ? o.per_pass : 1;
   r.set_settings(settings);
   const auto ts = std::chrono::steady_clock::now();

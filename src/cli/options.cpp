@@ -1,5 +1,6 @@
 #include "cli/options.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -67,6 +68,7 @@ Options parse_options(int argc, char** argv, bool bench) {
   o.settings.compute = true;  // natively the faster kernel where there is one
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
+    o.given.push_back(a);
     auto next = [&]() -> const char* {
       if (i + 1 >= argc) usage_error(a + " needs a value");
       return argv[++i];
@@ -122,6 +124,18 @@ Options parse_options(int argc, char** argv, bool bench) {
   }
   if (o.outs.empty()) o.outs.push_back("out.png");
   return o;
+}
+
+RenderSettings settings_for(const Options& o, const Scene& scene) {
+  auto free = [&](const char* flag) { return std::find(o.given.begin(), o.given.end(), flag) == o.given.end(); };
+  RenderSettings s = o.settings;
+  const SceneRender& r = scene.render;
+  if (r.bounces && free("--bounces")) s.max_bounces = *r.bounces;
+  if (r.mode && free("--mode")) s.mode = *r.mode;
+  if (r.tonemap && free("--tonemap")) s.tonemap = *r.tonemap;
+  if (r.exposure && free("--exposure")) s.exposure = *r.exposure;
+  s.sample_limit = r.samples && *r.samples > 0 && free("--spp") ? *r.samples : o.spp;
+  return s;
 }
 
 Scene load_scene(const Options& o) {

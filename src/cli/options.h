@@ -16,6 +16,7 @@ struct Options {
   std::vector<std::string> outs;  // render: --out may repeat (default out.png)
   bool auto_exposure = false;
   RenderSettings settings;
+  std::vector<std::string> given;  // the flags given: they win over the scene's <Render>
   // bench
   double seconds = 0;  // bench: duration (default 10); render, watch: optional time limit
   std::string reference;         // .pfm or .hdr
@@ -28,6 +29,9 @@ extern const char* const kUsage;
 Options parse_options(int argc, char** argv, bool bench);
 // The scene file with the options that change it applied (--env). Throws on bad input.
 Scene load_scene(const Options& o);
+// The settings to render `scene` with: the options, and the scene's <Render> for what no
+// flag set (sample_limit: --spp, else the scene's samples when > 0, else the default).
+RenderSettings settings_for(const Options& o, const Scene& scene);
 
 int run_render(const Options& o);
 int run_watch(const Options& o);

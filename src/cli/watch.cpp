@@ -95,7 +95,14 @@ int run_watch(const Options& o) {
       const Stamps now = stamps_of(watched);
       if (now != seen) {
         try {
-          const Scene scene = load_scene_file(o.scene);
+          const Scene scene = load_scene(o);
+          const RenderSettings wanted = settings_for(o, scene);  // an edit of <Render> applies
+          settings.max_bounces = wanted.max_bounces;
+          settings.mode = wanted.mode;
+          settings.tonemap = wanted.tonemap;
+          settings.exposure = wanted.exposure;
+          settings.sample_limit = wanted.sample_limit;
+          r.set_settings(settings);
           r.set_scene(scene);  // throws (and changes nothing) if the program does not build
           watched = scene.files;
           have_scene = true;

@@ -3,12 +3,15 @@
 // ("intensity" is radiance per unit colour, the same map for lights and Emit).
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "scene/kinds.h"
+#include "render/render_mode.h"
+#include "render/tonemap.h"
 #include "scene/mesh.h"
 
 namespace pt {
@@ -96,6 +99,16 @@ struct Environment {
   float intensity = 1.0f;  // multiplies the map (the seed's "energy": 0..5)
 };
 
+// <Render> (extension): the render settings a scene asks for, each optional. What a
+// user sets explicitly (a command-line flag, a page URL parameter) wins over it.
+struct SceneRender {
+  std::optional<int> bounces;       // 1..64
+  std::optional<RenderMode> mode;
+  std::optional<ToneMap> tonemap;
+  std::optional<float> exposure;    // > 0
+  std::optional<int> samples;       // the sample limit; 0: unlimited
+};
+
 struct Scene {
   std::string path;
   // The scene file and every file it references (meshes, images), as the loader opened
@@ -103,6 +116,7 @@ struct Scene {
   std::vector<std::string> files;
   Camera camera;
   Environment environment;
+  SceneRender render;
   bool dot_weight = true;  // SceneLevel dotWeight: cosine-weighted (true) or uniform diffuse sampling
   std::vector<Light> lights;
   std::vector<Shape> shapes;

@@ -453,12 +453,43 @@ struct Loader {
     scene.lights.push_back(l);
   }
 
+  // <Render bounces mode tonemap exposure samples/>: every attribute optional.
+  void render_settings(const XMLElement* e) {
+    XmlAttrs a(e, file);
+    SceneRender& r = scene.render;
+    auto integer = [&](const char* name, float lo, float hi) {
+      const float v = a.number(name);
+      if (!(v >= lo && v <= hi && v == std::floor(v)))
+        a.fail("'" + std::string(name) + "' must be an integer in " + std::to_string(int(lo)) + ".." + std::to_string(int(hi)));
+      return int(v);
+    };
+    if (a.has("bounces")) r.bounces = integer("bounces", 1.0f, 64.0f);
+    if (a.has("samples")) r.samples = integer("samples", 0.0f, 16777216.0f);
+    if (a.has("mode")) {
+      RenderMode m;
+      if (!render_mode_from_name(a.text("mode").c_str(), &m)) a.fail("'mode' must be path, whitted or sh");
+      r.mode = m;
+    }
+    if (a.has("tonemap")) {
+      ToneMap t;
+      if (!tonemap_from_name(a.text("tonemap").c_str(), &t))
+        a.fail("'tonemap' must be one of none, linear, reinhard, filmic, srgb, uncharted2, aces");
+      r.tonemap = t;
+    }
+    if (a.has("exposure")) {
+      r.exposure = a.number("exposure");
+      if (!(*r.exposure > 0.0f && *r.exposure <= 1000.0f)) a.fail("'exposure' must be in (0, 1000]");
+    }
+    a.finish();
+    if (e->FirstChildElement()) a.fail("takes no child elements");
+  }
+
   void root(const XMLElement* r) {
     if (!r || std::strcmp(r->Name(), "SceneLevel") != 0) fail(r, "the root element must be <SceneLevel>");
     XmlAttrs a(r, file);
     scene.dot_weight = a.boolean("dotWeight", true);
     a.finish();
-    bool have_camera = false, have_objects = false, have_env = false;
+    bool have_camera = false, have_objects = false, have_env = false, have_render = false;
     for (const XMLElement* e = r->FirstChildElement(); e; e = e->NextSiblingElement()) {
       const char* n = e->Name();
       if (!std::strcmp(n, "Camera")) {
@@ -487,6 +518,10 @@ struct Loader {
         }
         env.finish();
         if (e->FirstChildElement()) env.fail("takes no child elements");
+      } else if (!std::strcmp(n, "Render")) {
+        if (have_render) fail(e, "a second <Render>");
+        have_render = true;
+        render_settings(e);
       } else if (!std::strcmp(n, "Objects")) {
         if (have_objects) fail(e, "a second <Objects>");
         have_objects = true;

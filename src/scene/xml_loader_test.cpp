@@ -234,3 +234,28 @@ TEST_CASE("camera lens and shutter, sphere velocity", "[loader]") {
   CHECK(error_of(std::string(kHead) + "<Objects>\n<Box min=\"0 0 0\" max=\"1 1 1\" velocity=\"1 0 0\"><Diffuse/></Box></Objects></SceneLevel>") ==
         "bad.xml:5: <Box>: unknown attribute 'velocity'");
 }
+
+TEST_CASE("<Render>: the settings a scene asks for, each optional and checked", "[loader]") {
+  const std::string h = kHead;
+  const std::string objs = "<Objects><Sphere center=\"0 0 0\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>";
+  const Scene none = load_scene_text(h + objs, "x.xml");
+  CHECK(!none.render.bounces);
+  CHECK(!none.render.mode);
+  CHECK(!none.render.samples);
+  const Scene s = load_scene_text(
+      h + "<Render bounces=\"12\" mode=\"whitted\" tonemap=\"filmic\" exposure=\"0.5\" samples=\"256\"/>" + objs, "x.xml");
+  CHECK(s.render.bounces == 12);
+  CHECK(s.render.mode == RenderMode::Whitted);
+  CHECK(s.render.tonemap == ToneMap::Filmic);
+  CHECK(s.render.exposure == 0.5f);
+  CHECK(s.render.samples == 256);
+  const Scene part = load_scene_text(h + "<Render samples=\"0\"/>" + objs, "x.xml");
+  CHECK(part.render.samples == 0);
+  CHECK(!part.render.bounces);
+  CHECK(error_of(h + "<Render bounces=\"0\"/>" + objs) == "bad.xml:4: <Render>: 'bounces' must be an integer in 1..64");
+  CHECK(error_of(h + "<Render bounces=\"2.5\"/>" + objs) == "bad.xml:4: <Render>: 'bounces' must be an integer in 1..64");
+  CHECK(error_of(h + "<Render mode=\"raster\"/>" + objs) == "bad.xml:4: <Render>: 'mode' must be path, whitted or sh");
+  CHECK(error_of(h + "<Render exposure=\"0\"/>" + objs) == "bad.xml:4: <Render>: 'exposure' must be in (0, 1000]");
+  CHECK(error_of(h + "<Render spp=\"4\"/>" + objs) == "bad.xml:4: <Render>: unknown attribute 'spp'");
+  CHECK(error_of(h + "<Render/>\n<Render/>" + objs) == "bad.xml:5: a second <Render>");
+}
