@@ -81,13 +81,14 @@ const ptFiles = (() => {
     },
   });
 
-  // Dropped or picked files: matched by their relative path (a dropped folder), else by
-  // name, so a scene and its meshes and maps can be dropped together as loose files.
-  function local(fileList) {
+  // Dropped or picked files ({file, path} pairs): matched by their relative path (a
+  // dropped folder), else by name, so a scene and its meshes and maps can be dropped
+  // together as loose files.
+  function local(entries) {
     const byPath = new Map(), byName = new Map();
-    for (const f of fileList) {
-      byPath.set(normalize(f.webkitRelativePath || f.name), f);
-      byName.set(f.name, f);
+    for (const { file, path } of entries) {
+      byPath.set(normalize(path), file);
+      byName.set(file.name, file);
     }
     return {
       async get(path) {
@@ -116,13 +117,42 @@ const ptFiles = (() => {
     return callLoad(path, keepCamera);
   }
 
-  async function openLocal(fileList) {
-    const files = [...fileList];
-    const xml = files.find((f) => /\.xml$/i.test(f.name));
-    if (!xml) return notice("Drop a scene (.xml) together with the files it uses.");
-    const scenePath = normalize(xml.webkitRelativePath || xml.name);
+  // Files as {file, path}: a FileList (picker, loose files) or what a drop held.
+  const withPaths = (fileList) => [...fileList].map((file) => ({ file, path: file.webkitRelativePath || file.name }));
+
+  // What a drop holds: loose files, or folders read recursively (each file with its path
+  // from the dropped folder's name down). The entries must be taken from the event
+  // before the first await: the browser empties the DataTransfer after the handler.
+  async function droppedFiles(dt) {
+    const entries = [...(dt.items || [])].map((i) => (i.webkitGetAsEntry ? i.webkitGetAsEntry() : null)).filter(Boolean);
+    if (!entries.some((e) => e.isDirectory)) return withPaths(dt.files);
+    const out = [];
+    const walk = async (entry, prefix) => {
+      if (entry.isFile) {
+        out.push({ file: await new Promise((ok, fail) => entry.file(ok, fail)), path: prefix + entry.name });
+        return;
+      }
+      const reader = entry.createReader();
+      for (;;) {  // readEntries answers in batches until an empty one
+        const batch = await new Promise((ok, fail) => reader.readEntries(ok, fail));
+        if (!batch.length) break;
+        for (const e of batch) await walk(e, `${prefix}${entry.name}/`);
+      }
+    };
+    for (const e of entries) await walk(e, "");
+    return out;
+  }
+
+  // The scene of a drop: its .xml file nearest the top (then by name), loaded with every
+  // file it references found among the others.
+  async function openLocal(entries) {
+    const depth = (p) => p.split("/").length;
+    const xml = entries.filter((e) => /\.xml$/i.test(e.path))
+      .sort((a, b) => depth(a.path) - depth(b.path) || (a.path < b.path ? -1 : a.path > b.path ? 1 : 0))[0];
+    if (!xml) return notice("Drop a scene (.xml) together with the files it uses, or its folder.");
+    const scenePath = normalize(xml.path);
     const root = `/drop/${++state.drops}`;
-    write(await collect(local(files), scenePath), root);
+    write(await collect(local(entries), scenePath), root);
     callLoad(`${root}/${scenePath}`, false);
   }
 
@@ -186,18 +216,19 @@ const ptFiles = (() => {
       window.addEventListener(type, (e) => { e.preventDefault(); e.dataTransfer.dropEffect = "copy"; });
     window.addEventListener("drop", (e) => {
       e.preventDefault();
-      if (e.dataTransfer && e.dataTransfer.files.length) openLocal(e.dataTransfer.files);
+      if (e.dataTransfer && (e.dataTransfer.files.length || e.dataTransfer.items.length))
+        droppedFiles(e.dataTransfer).then(openLocal);
     });
     const picker = document.getElementById("picker");
     document.getElementById("open").addEventListener("click", () => picker.click());
     picker.addEventListener("change", () => {
-      if (picker.files.length) openLocal(picker.files);
+      if (picker.files.length) openLocal(withPaths(picker.files));
       picker.value = "";
       canvas.focus();
     });
   }
 
-  return { normalize, references, collect, write, http, local, openScene, openLocal, stageAtStartup,
+  return { normalize, references, collect, write, http, local, droppedFiles, openScene, openLocal, stageAtStartup,
            followDevServer, installDropAndPicker, state };
 })();
 window.ptFiles = ptFiles;

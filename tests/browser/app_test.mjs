@@ -229,6 +229,32 @@ async function devChecks(context, url, dir) {
   check("a scene chosen with the file picker loads", s.scene === "/drop/2/picked.xml" && !s.error && s.mean[2] > 2 * s.mean[0],
         JSON.stringify({ scene: s.scene, error: s.error, mean: s.mean }));
 
+  // A dropped folder: the browser hands directory entries (FileSystemDirectoryEntry),
+  // which a synthetic DataTransfer cannot hold, so the drop event carries stand-ins with
+  // the same interface: a folder with the scene at its top, its mesh in a subfolder
+  // (the scene's src says meshes/quad.obj), an older scene deeper down, and a directory
+  // reader that answers in two batches before the empty one.
+  await page.evaluate(({ xml, old, obj }) => {
+    const file = (name, text) => ({ isFile: true, isDirectory: false, name, file: (ok) => ok(new File([text], name)) });
+    const dir = (name, children) => ({
+      isFile: false, isDirectory: true, name,
+      createReader: () => {
+        const batches = [children.slice(0, 1), children.slice(1), []];
+        return { readEntries: (ok) => ok(batches.shift()) };
+      },
+    });
+    const root = dir("myscene", [dir("old", [file("backup.xml", old)]), file("scene.xml", xml), dir("meshes", [file("quad.obj", obj)])]);
+    const dt = { files: [], items: [{ webkitGetAsEntry: () => root }] };
+    const ev = new Event("drop", { bubbles: true, cancelable: true });
+    Object.defineProperty(ev, "dataTransfer", { value: dt });
+    document.getElementById("canvas").dispatchEvent(ev);
+  }, { xml: liveScene("1 0.5 0").replace('src="quad.obj"', 'src="meshes/quad.obj"'), old: liveScene("0 0 0"), obj: quad(1) });
+  await until(page, () => window.ptStats().scene.endsWith("/myscene/scene.xml") && window.ptStats().samples >= 2, null, 30000).catch(() => {});
+  s = await stats(page);
+  check("a dropped folder loads its top scene with the files in its subfolders",
+        s.scene === "/drop/3/myscene/scene.xml" && !s.error && s.mean[0] > 1.5 * s.mean[2] && s.files.includes("/drop/3/myscene/meshes/quad.obj"),
+        JSON.stringify({ scene: s.scene, error: s.error, mean: s.mean, files: s.files }));
+
   // Context loss and restore: rendering stops, then resumes with the same image.
   await page.evaluate(() => window.ptLoadScene("/scenes/live.xml"));
   await page.evaluate(() => window.ptSetLimit(4));
