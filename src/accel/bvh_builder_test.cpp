@@ -11,6 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include "accel/bvh.h"
+#include "accel/test_boxes.h"
 #include "render/packing.h"
 #include "scene/xml_loader.h"
 #include "test_paths.h"
@@ -212,18 +213,6 @@ Bvh sliced(const std::vector<Aabb>& boxes, const BvhBuildOptions& o, long work, 
   return b.take();
 }
 
-std::vector<Aabb> clumps(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> u(-100.0f, 100.0f), s(0.01f, 3.0f), clump(-4.0f, 4.0f);
-  std::vector<Aabb> boxes(static_cast<size_t>(n));
-  const glm::vec3 centres[3] = {{-60.0f, 10.0f, 30.0f}, {50.0f, -70.0f, 0.0f}, {10.0f, 80.0f, -40.0f}};
-  for (size_t i = 0; i < boxes.size(); ++i) {
-    const glm::vec3 c = i % 10 == 0 ? glm::vec3(u(rng), u(rng), u(rng)) : centres[i % 3] + glm::vec3(clump(rng), clump(rng), clump(rng));
-    boxes[i].grow(c - glm::vec3(s(rng), s(rng), s(rng)));
-    boxes[i].grow(c + glm::vec3(s(rng), s(rng), s(rng)));
-  }
-  return boxes;
-}
 
 void check_against_reference(const std::vector<Aabb>& boxes, const BvhBuildOptions& o, const char* what) {
   const Bvh want = reference_build(boxes, o);
@@ -242,20 +231,13 @@ void check_against_reference(const std::vector<Aabb>& boxes, const BvhBuildOptio
 
 TEST_CASE("BVH: the sliced build equals the one-shot reference builder, bit for bit", "[bvh]") {
   BvhBuildOptions o;
-  check_against_reference(clumps(20000, 3), o, "random clumps");
-  check_against_reference(clumps(3000, 11), BvhBuildOptions{8, 4, 1, 1.0f, 10}, "shallow depth bound (median splits)");
+  check_against_reference(random_boxes(20000, 3), o, "random clumps");
+  check_against_reference(random_boxes(3000, 11), BvhBuildOptions{8, 4, 1, 1.0f, 10}, "shallow depth bound (median splits)");
   std::vector<Aabb> one(1);
   one[0].grow(glm::vec3(1.0f));
   check_against_reference(one, o, "one box");
   check_against_reference(std::vector<Aabb>(1000, one[0]), o, "coincident centroids");
-  std::vector<Aabb> chain;  // shrinking geometrically: peeled one per level down to the depth bound
-  for (int i = 0; i < 1000; ++i) {
-    Aabb b;
-    const float x = std::pow(0.9f, float(i)) * 1e3f;
-    b.grow(glm::vec3(x));
-    b.grow(glm::vec3(x * 1.01f));
-    chain.push_back(b);
-  }
+  const std::vector<Aabb> chain = geometric_chain(1000);  // peeled one per level down to the depth bound
   BvhBuildOptions deep = o;
   deep.max_depth = 20;
   check_against_reference(chain, deep, "geometric chain");

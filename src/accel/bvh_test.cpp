@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "accel/bvh.h"
+#include "accel/test_boxes.h"
 
 using namespace pt;
 
@@ -50,20 +51,6 @@ void check_structure(const Bvh& bvh, const std::vector<Aabb>& boxes, const BvhBu
   CHECK(bvh.depth <= o.max_depth);
 }
 
-// Clustered like real scenes: most boxes in a few dense clumps, the rest spread thin.
-std::vector<Aabb> random_boxes(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> u(-100.0f, 100.0f), s(0.01f, 3.0f), clump(-4.0f, 4.0f);
-  std::vector<Aabb> boxes(static_cast<size_t>(n));
-  const glm::vec3 centres[3] = {{-60.0f, 10.0f, 30.0f}, {50.0f, -70.0f, 0.0f}, {10.0f, 80.0f, -40.0f}};
-  for (size_t i = 0; i < boxes.size(); ++i) {
-    Aabb& b = boxes[i];
-    const glm::vec3 c = i % 10 == 0 ? glm::vec3(u(rng), u(rng), u(rng)) : centres[i % 3] + glm::vec3(clump(rng), clump(rng), clump(rng));
-    b.grow(c - glm::vec3(s(rng), s(rng), s(rng)));
-    b.grow(c + glm::vec3(s(rng), s(rng), s(rng)));
-  }
-  return boxes;
-}
 
 }  // namespace
 
@@ -94,16 +81,7 @@ TEST_CASE("BVH: degenerate inputs (one primitive, coincident centroids, a geomet
   CHECK(b1.nodes.size() == 1);
   std::vector<Aabb> same(1000, one[0]);  // every centroid equal: SAH finds no plane
   check_structure(build_bvh(same, o), same, o);
-  // Boxes shrinking geometrically towards the origin: SAH peels one per level, so
-  // without the depth bound the tree would be about 1000 deep.
-  std::vector<Aabb> chain;
-  for (int i = 0; i < 1000; ++i) {
-    Aabb b;
-    const float x = std::pow(0.9f, float(i)) * 1e3f;
-    b.grow(glm::vec3(x));
-    b.grow(glm::vec3(x * 1.01f));
-    chain.push_back(b);
-  }
+  const std::vector<Aabb> chain = geometric_chain(1000);  // about 1000 deep without the bound
   const Bvh bc = build_bvh(chain, o);
   check_structure(bc, chain, o);
   std::printf("geometric chain of 1000 boxes: depth %d (bound %d)\n", bc.depth, o.max_depth);
