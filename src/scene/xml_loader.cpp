@@ -30,11 +30,18 @@ namespace {
 using tinyxml2::XMLElement;
 
 // ---- shapes ------------------------------------------------------------------------
+// Motion blur (extension): `velocity` (per unit time), or `end`, the centre at time 1
+// (velocity = end - start); not both.
+glm::vec3 parse_motion(XmlAttrs& a, glm::vec3 start) {
+  if (a.has("velocity") && a.has("end")) a.fail("give either 'velocity' or 'end'");
+  return a.has("end") ? a.vec3("end") - start : a.vec3("velocity", glm::vec3(0.0f));
+}
+
 void parse_sphere(XmlAttrs& a, Shape& s) {
   s.a = a.vec3("center");
   s.radius = a.number("radius");
   if (!(s.radius > 0.0f)) a.fail("radius must be positive");
-  s.velocity = a.vec3("velocity", glm::vec3(0.0f));  // extension: motion blur
+  s.velocity = parse_motion(a, s.a);
 }
 
 void parse_box(XmlAttrs& a, Shape& s) {
@@ -428,7 +435,7 @@ struct Loader {
     l.radius = a.number("radius", 1.0f);
     l.color = a.vec3("color", glm::vec3(1.0f));
     l.intensity = a.number("intensity", 1.0f);
-    const glm::vec3 velocity = a.vec3("velocity", glm::vec3(0.0f));
+    const glm::vec3 velocity = parse_motion(a, l.position);
     if (!(l.radius > 0.0f)) a.fail("'radius' must be positive");
     if (l.intensity < 0.0f || glm::any(glm::lessThan(l.color, glm::vec3(0.0f)))) a.fail("intensity and color must be >= 0");
     a.finish();

@@ -233,6 +233,14 @@ TEST_CASE("camera lens and shutter, sphere velocity", "[loader]") {
         "bad.xml:1: <Camera>: 'aperture' and 'shutter' must be >= 0 and 'focalDistance' > 0");
   CHECK(error_of(std::string(kHead) + "<Objects>\n<Box min=\"0 0 0\" max=\"1 1 1\" velocity=\"1 0 0\"><Diffuse/></Box></Objects></SceneLevel>") ==
         "bad.xml:5: <Box>: unknown attribute 'velocity'");
+  // `end`: the position at time 1, the same motion as velocity = end - start.
+  const Scene e = load_scene_text(std::string(kHead) + "<Light position=\"0 5 0\" radius=\"1\" end=\"0 6 0\"/><Objects>"
+                                  "<Sphere center=\"1 2 3\" radius=\"1\" end=\"2 2 1\"><Diffuse/></Sphere></Objects></SceneLevel>",
+                                  "x.xml");
+  CHECK(e.shapes[0].velocity == glm::vec3(0, 1, 0));
+  CHECK(e.shapes[1].velocity == glm::vec3(1, 0, -2));
+  CHECK(error_of(std::string(kHead) + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\" velocity=\"1 0 0\" end=\"1 1 1\"><Diffuse/></Sphere>"
+                 "</Objects></SceneLevel>") == "bad.xml:5: <Sphere>: give either 'velocity' or 'end'");
 }
 
 TEST_CASE("<Render>: the settings a scene asks for, each optional and checked", "[loader]") {
