@@ -1,6 +1,8 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <limits>
+#include <optional>
 
 #include "render/camera.h"
 #include "render/environment.h"
@@ -108,7 +110,10 @@ void Renderer::set_scene(const Scene& scene) { set_scene(scene, pack_scene(scene
 void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* staged) {
   // Everything that can fail (packing, limits, image maps, compiling) happens before any
   // state changes: a scene that cannot be rendered leaves the previous one and its samples.
-  if (!staged || !staged->done()) require_scene_textures(limits_, p);  // (a StagedScene checked them)
+  // The record textures: staged ahead (a page), else staged here in one go; the
+  // constructor checks them against the limits.
+  std::optional<StagedScene> own;
+  if (!staged || !staged->done()) staged = &own.emplace(limits_, p);
   if (scene.environment.map)
     limits_.require_texture(scene.environment.map->width + 1, scene.environment.map->height + 1, "the environment map");
   const Features old = features_;
@@ -129,21 +134,13 @@ void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* 
     sh_valid_ = false;
   env_ = e;
   update_sh();
-  if (staged && staged->done()) {
-    shape_tex_ = std::move(staged->shapes);
-    material_tex_ = std::move(staged->materials);
-    light_tex_ = std::move(staged->lights);
-    node_tex_ = std::move(staged->nodes);
-    prim_tex_ = std::move(staged->prims);
-    vertex_tex_ = std::move(staged->vertices);
-  } else {
-    shape_tex_ = upload(p.shapes);
-    material_tex_ = upload(p.materials);
-    light_tex_ = upload(p.lights);
-    node_tex_ = upload(p.nodes);
-    prim_tex_ = upload(p.prims);
-    vertex_tex_ = upload(p.vertices);
-  }
+  staged->upload(std::numeric_limits<int>::max());  // nothing left when staged ahead
+  shape_tex_ = std::move(staged->shapes);
+  material_tex_ = std::move(staged->materials);
+  light_tex_ = std::move(staged->lights);
+  node_tex_ = std::move(staged->nodes);
+  prim_tex_ = std::move(staged->prims);
+  vertex_tex_ = std::move(staged->vertices);
   if (textured) {
     maps_ = TextureArray(maps.width, maps.height, maps.layers, maps.texels.data());
     uv_tex_ = upload(pack_uvs(scene));

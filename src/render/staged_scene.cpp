@@ -5,6 +5,7 @@
 #include <vector>
 
 namespace pt {
+namespace {
 
 void require_scene_textures(const GlLimits& limits, const PackedScene& p) {
   limits.require_texture(kDataWidth, p.shapes.rows(), "the scene's objects (" + std::to_string(p.shapes.count()) + ")");
@@ -14,6 +15,8 @@ void require_scene_textures(const GlLimits& limits, const PackedScene& p) {
   limits.require_texture(kDataWidth, p.prims.rows(), "the scene's primitives (" + std::to_string(p.prims.count()) + ")");
   limits.require_texture(kDataWidth, p.vertices.rows(), "the scene's mesh vertices");
 }
+
+}  // namespace
 
 StagedScene::StagedScene(const GlLimits& limits, const PackedScene& packed) : p_(&packed) {
   require_scene_textures(limits, packed);

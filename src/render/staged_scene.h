@@ -9,13 +9,10 @@
 
 namespace pt {
 
-// Throws GlError, naming what is too large, when a record texture of the scene would
-// exceed the GPU's texture size.
-void require_scene_textures(const GlLimits& limits, const PackedScene& p);
-
 class StagedScene {
  public:
-  // Checks the limits (require_scene_textures), then allocates the textures. `packed`
+  // Throws GlError, naming what is too large, when a record texture of the scene would
+  // exceed the GPU's texture size; else allocates the textures. `packed`
   // must stay unchanged and alive until the upload is done.
   StagedScene(const GlLimits& limits, const PackedScene& packed);
   bool upload(int rows);  // up to `rows` more rows of texels; true once all are on the GPU
