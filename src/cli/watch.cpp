@@ -96,12 +96,10 @@ int run_watch(const Options& o) {
       if (now != seen) {
         try {
           const Scene scene = load_scene(o);
-          const RenderSettings wanted = settings_for(o, scene);  // an edit of <Render> applies
-          settings.max_bounces = wanted.max_bounces;
-          settings.mode = wanted.mode;
-          settings.tonemap = wanted.tonemap;
-          settings.exposure = wanted.exposure;
-          settings.sample_limit = wanted.sample_limit;
+          RenderSettings wanted = settings_for(o, scene);  // an edit of <Render> applies
+          wanted.spp_per_pass = settings.spp_per_pass;        // the pacer's draw size stays
+          wanted.band_rows = settings.band_rows;
+          settings = wanted;
           r.set_settings(settings);
           r.set_scene(scene);  // throws (and changes nothing) if the program does not build
           watched = scene.files;
