@@ -124,12 +124,15 @@ void App::scan_scenes() {
 
 bool App::load_scene(const std::string& path, bool keep_camera) {
   try {
-    const auto t0 = std::chrono::steady_clock::now();
-    Scene s = load_scene_file(path);
-    std::printf("scene %s: read in %.0f ms\n", path.c_str(), ms_since(t0));
-    s.path = path;
+    // The XML is checked here; its meshes are read in slices (work()).
+    auto read = std::make_unique<SceneLoad>(read_scene_file(path), path);
     error_.reset();
-    start_loading(std::move(s), keep_camera && loads_ > 0);
+    Loading l;
+    l.path = path;
+    l.read = std::move(read);
+    l.keep_camera = keep_camera && loads_ > 0;
+    l.since = std::chrono::steady_clock::now();
+    loading_ = std::move(l);  // a newer request replaces one in progress
     return true;
   } catch (const std::exception& e) {
     error_ = e.what();
@@ -452,19 +455,26 @@ std::string App::stats_json() const {
   return j + "}";
 }
 
+std::string App::load_stage() const {
+  if (!loading_) return "";
+  const Loading& l = *loading_;
+  return l.read ? l.read->stage() : !l.packed ? l.pack->stage() : l.staged && l.staged->done() ? "compiling" : "uploading";
+}
+
 // The scene on its way (null when none) and the last one's preparation.
 std::string App::load_fields() const {
   std::string j = "\"loading\":";
   if (loading_) {
-    j += "{\"scene\":" + json_string(loading_->scene->path) + ",\"stage\":" +
-         json_string(!loading_->packed ? loading_->pack->stage() : loading_->staged && loading_->staged->done() ? "compiling" : "uploading") +
+    j += "{\"scene\":" + json_string(loading_->path) + ",\"stage\":" + json_string(load_stage()) +
          ",\"progress\":" + json_number(load_progress()) + "}";
   } else {
     j += "null";
   }
   const Renderer::BvhStats& b = renderer_->bvh_stats();
-  j += ",\"lastLoad\":{\"ms\":" + json_number(last_load_ms_) + ",\"packWorkMs\":" + json_number(last_pack_work_ms_) +
+  j += ",\"lastLoad\":{\"ms\":" + json_number(last_load_ms_) + ",\"readWorkMs\":" + json_number(last_read_ms_) +
+       ",\"readSlices\":" + std::to_string(last_read_slices_) + ",\"packWorkMs\":" + json_number(last_pack_work_ms_) +
        ",\"slices\":" + std::to_string(last_slices_) + ",\"longestSliceMs\":" + json_number(last_longest_slice_ms_) +
+       ",\"longestSliceStage\":" + json_string(last_longest_slice_stage_) +
        ",\"bvhBuildMs\":" + json_number(b.build_ms) + ",\"primitives\":" + std::to_string(b.primitives) + "}";
   return j;
 }

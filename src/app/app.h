@@ -16,6 +16,7 @@
 #include "render/renderer.h"
 #include "render/staged_scene.h"
 #include "scene/scene.h"
+#include "scene/xml_loader.h"
 
 namespace pt {
 
@@ -143,26 +144,34 @@ class App {
   // A loaded scene being packed in slices, then waiting for its program; applied by
   // poll_loading once both are done.
   struct Loading {
-    std::unique_ptr<Scene> scene;  // at a fixed address: the job reads it
+    std::string path;
+    std::unique_ptr<SceneLoad> read;  // first its meshes are read or generated in slices
+    std::unique_ptr<Scene> scene;  // then it is packed; at a fixed address: the job reads it
     std::unique_ptr<PackJob> pack;
     std::optional<PackedScene> packed;
     std::unique_ptr<StagedScene> staged;  // its record textures, uploaded a band per frame
     bool keep_camera = false;      // the view then is kept, else the scene's is shown
     std::chrono::steady_clock::time_point since;  // when it was asked for
-    double work_ms = 0.0, longest_slice_ms = 0.0;  // time spent in slices of the packing
+    double work_ms = 0.0;           // time spent in slices of the packing
+    double longest_slice_ms = 0.0;  // the longest slice of any stage, and its stage
+    std::string longest_slice_stage;
+    double read_ms = 0.0;                          // time spent in slices of reading the meshes
+    int read_slices = 0;
     double upload_ms = 0.0;
     int slices = 0;
   };
   void load_failed(std::string path, std::string why);
   std::string load_fields() const;
+  std::string load_stage() const;  // of the scene on its way: "reading model.glb", "building the BVH", ...
   double load_progress() const;  // 0..1
   bool shown_ = false;  // the renderer has a scene (not yet after a lost context)
   std::optional<Loading> loading_;
   int loads_ = 0, context_restores_ = 0;
   // The last preparation, for the stats: wall time from the request to the swap, the
   // packing's slices and their time, and the longest slice.
-  double last_load_ms_ = 0.0, last_pack_work_ms_ = 0.0, last_longest_slice_ms_ = 0.0;
-  int last_slices_ = 0;
+  double last_load_ms_ = 0.0, last_pack_work_ms_ = 0.0, last_longest_slice_ms_ = 0.0, last_read_ms_ = 0.0;
+  int last_slices_ = 0, last_read_slices_ = 0;
+  std::string last_longest_slice_stage_;
 
   // Picking: a left press and release on the image without moving selects.
   int selected_ = -1;

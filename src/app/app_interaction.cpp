@@ -26,6 +26,7 @@ constexpr float kClickSlopPixels = 4.0f;   // a press and release closer than th
 // frames), checking the clock every kPackWorkUnits units (about 0.1-0.5 ms).
 constexpr double kFrameWorkMs = 4.0;
 constexpr long kPackWorkUnits = 8192;
+constexpr long kReadWorkUnits = 8192;  // reading meshes: about a triangle, vertex or byte each
 constexpr int kUploadRows = 8;  // rows of record texels per upload call (512 KB)
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -36,6 +37,7 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 void App::start_loading(Scene scene, bool keep_camera) {
   Loading l;
+  l.path = scene.path;
   l.scene = std::make_unique<Scene>(std::move(scene));
   renderer_->program_ready(*l.scene);  // its program starts building alongside the packing
   l.pack = std::make_unique<PackJob>(*l.scene);
@@ -47,16 +49,31 @@ void App::start_loading(Scene scene, bool keep_camera) {
 bool App::work(double budget_ms) {
   if (!preparing()) return false;
   Loading& l = *loading_;
+  const std::string stage = load_stage();
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    if (!l.packed) {
+    if (l.read) {
+      bool done = false;
+      while (!(done = l.read->run(kReadWorkUnits)) && ms_since(t0) < budget_ms) {
+      }
+      const double ms = ms_since(t0);
+      l.read_ms += ms;
+      ++l.read_slices;
+      if (done) {
+        l.scene = std::make_unique<Scene>(l.read->take());
+        l.read.reset();
+        std::printf("scene %s: read in %d slices (%.0f ms of work, %.0f ms after the request)\n", l.path.c_str(), l.read_slices,
+                    l.read_ms, ms_since(l.since));
+        renderer_->program_ready(*l.scene);  // its program starts building alongside the packing
+        l.pack = std::make_unique<PackJob>(*l.scene);
+      }
+    } else if (!l.packed) {
       bool done = false;
       while (!(done = l.pack->run(kPackWorkUnits)) && ms_since(t0) < budget_ms) {
       }
       if (done) l.packed = l.pack->take();
       const double ms = ms_since(t0);
       l.work_ms += ms;
-      l.longest_slice_ms = std::max(l.longest_slice_ms, ms);
       ++l.slices;
     } else {
       // Then the record textures, a band of rows at a time (copies to the GPU; WebGL
@@ -67,8 +84,12 @@ bool App::work(double budget_ms) {
       l.upload_ms += ms_since(t0);
     }
   } catch (const std::exception& e) {
-    load_failed(l.scene->path, e.what());
+    load_failed(l.path, e.what());
     return false;
+  }
+  if (const double ms = ms_since(t0); ms > l.longest_slice_ms) {
+    l.longest_slice_ms = ms;  // of any stage (reading, packing, uploading), and which
+    l.longest_slice_stage = stage;
   }
   return preparing();
 }
@@ -89,7 +110,7 @@ void App::load_failed(std::string path, std::string why) {  // copies: loading_ 
 void App::poll_loading() {
   work(kFrameWorkMs);  // the frame's own slice; the page adds slices between frames
   if (!loading_) return;
-  const std::string path = loading_->scene->path;
+  const std::string path = loading_->path;
   try {
     if (preparing() || !renderer_->program_ready(*loading_->scene)) return;
     Loading l = std::move(*loading_);
@@ -102,6 +123,9 @@ void App::poll_loading() {
     last_pack_work_ms_ = l.work_ms;
     last_slices_ = l.slices;
     last_longest_slice_ms_ = l.longest_slice_ms;
+    last_longest_slice_stage_ = l.longest_slice_stage;
+    last_read_ms_ = l.read_ms;
+    last_read_slices_ = l.read_slices;
     const Renderer::BvhStats& b = renderer_->bvh_stats();
     std::printf("scene %s: BVH of %d primitives built in %.0f ms; packed in %d slices (%.0f ms, the longest %.0f ms); "
                 "uploaded in %.0f ms; scene set in %.0f ms; ready %.0f ms after the request\n",
@@ -165,7 +189,7 @@ void App::context_restored() {
   // one fail, load_failed brings the kept one back.
   if (loading_) {
     loading_->staged.reset();  // its textures were the lost context's
-    renderer_->program_ready(*loading_->scene);
+    if (loading_->scene) renderer_->program_ready(*loading_->scene);
   }
   else if (loads_ > 0) start_loading(scene_, true);
   ++context_restores_;
@@ -256,14 +280,18 @@ void App::draw_view_controls() {
 double App::load_progress() const {
   if (!loading_) return 1.0;
   const Loading& l = *loading_;
-  return l.packed ? 0.9 + 0.1 * (l.staged ? l.staged->progress() : 0.0) : 0.9 * l.pack->progress();
+  // Reading the meshes (a scene's first part of the bar), then packing and uploading.
+  constexpr double kReadShare = 0.3;
+  if (l.read) return kReadShare * l.read->progress();
+  const double rest = l.packed ? 0.9 + 0.1 * (l.staged ? l.staged->progress() : 0.0) : 0.9 * l.pack->progress();
+  return l.read_slices > 0 ? kReadShare + (1.0 - kReadShare) * rest : rest;
 }
 
 // A scene on its way: what is being done, and how far (the page keeps drawing meanwhile).
 void App::draw_loading() {
   if (!loading_) return;
   const Loading& l = *loading_;
-  const std::string& path = l.scene->path;
+  const std::string& path = l.path;
   const size_t slash = path.find_last_of('/');
   ImGui::Text("loading %s", slash == std::string::npos ? path.c_str() : path.c_str() + slash + 1);
   char overlay[96];
@@ -274,7 +302,7 @@ void App::draw_loading() {
     const char* frames = "|/-\\";  // a spinner: the driver compiles in the background
     std::snprintf(overlay, sizeof overlay, "compiling shader %c %.1f s", frames[int(last_frame_ms_ / 120.0) & 3], s);
   } else {
-    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", l.pack->stage(), 100.0 * load_progress(), s);
+    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", l.read ? l.read->stage().c_str() : l.pack->stage(), 100.0 * load_progress(), s);
   }
   ImGui::ProgressBar(float(load_progress()), ImVec2(ImGui::GetFontSize() * 20.0f, 0.0f), overlay);
 }

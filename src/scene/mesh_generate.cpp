@@ -1,7 +1,8 @@
 #include "scene/mesh_generate.h"
 
 #include <cmath>
-#include <unordered_map>
+#include <cstdint>
+#include <vector>
 
 namespace pt {
 namespace {
@@ -13,10 +14,12 @@ float bumps(glm::vec3 p) {
          0.25f * std::sin(61.0f * p.y + 47.0f * p.z) * std::sin(53.0f * p.x);
 }
 
+constexpr long kStep = 1024;  // triangles or vertices between two checks of the work left
+
 }  // namespace
 
-MeshData generate_icosphere(int level, float displace) {
-  MeshData m;
+Resumable generate_icosphere_steps(int level, float displace, MeshData& m) {
+  m = MeshData();
   const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
   for (glm::vec3 v : {glm::vec3(-1, t, 0), glm::vec3(1, t, 0), glm::vec3(-1, -t, 0), glm::vec3(1, -t, 0), glm::vec3(0, -1, t),
                       glm::vec3(0, 1, t), glm::vec3(0, -1, -t), glm::vec3(0, 1, -t), glm::vec3(t, 0, -1), glm::vec3(t, 0, 1),
@@ -26,35 +29,60 @@ MeshData generate_icosphere(int level, float displace) {
                  {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
                  {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (int l = 0; l < level; ++l) {
-    std::unordered_map<uint64_t, unsigned> mid;
-    mid.reserve(m.triangles.size() * 2);
+    // Each edge's midpoint, made once: an open-addressing table of (edge + 1) keys, a
+    // power of two at least twice the edges (3/2 per triangle), freed in one piece (a map
+    // of nodes took a long, unsliced while to free at the last level).
+    size_t capacity = 64;
+    int shift = 58;  // 64 - log2(capacity): the product's top bits index the table
+    while (capacity < 3 * m.triangles.size()) capacity *= 2, --shift;
+    m.positions.reserve(m.positions.size() + 3 * m.triangles.size() / 2);
+    std::vector<uint64_t> keys(capacity, 0);
+    std::vector<unsigned> values(capacity);
     auto midpoint = [&](unsigned a, unsigned b) {
-      const uint64_t key = a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a);
-      auto [it, fresh] = mid.try_emplace(key, unsigned(m.positions.size()));
-      if (fresh) m.positions.push_back(glm::normalize(m.positions[a] + m.positions[b]));
-      return it->second;
+      const uint64_t key = (a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a)) + 1;
+      size_t i = size_t((key * 0x9E3779B97F4A7C15ull) >> shift);
+      while (keys[i] != 0 && keys[i] != key) i = (i + 1) & (capacity - 1);
+      if (keys[i] == 0) {
+        keys[i] = key;
+        values[i] = unsigned(m.positions.size());
+        m.positions.push_back(glm::normalize(m.positions[a] + m.positions[b]));
+      }
+      return values[i];
     };
     std::vector<glm::uvec3> next;
     next.reserve(m.triangles.size() * 4);
-    for (const glm::uvec3 tri : m.triangles) {
+    for (size_t i = 0; i < m.triangles.size(); ++i) {
+      const glm::uvec3 tri = m.triangles[i];
       const unsigned ab = midpoint(tri.x, tri.y), bc = midpoint(tri.y, tri.z), ca = midpoint(tri.z, tri.x);
       next.insert(next.end(), {{tri.x, ab, ca}, {tri.y, bc, ab}, {tri.z, ca, bc}, {ab, bc, ca}});
+      if (i % kStep == kStep - 1) co_await Work{kStep};
     }
     m.triangles.swap(next);
   }
-  for (glm::vec3& p : m.positions) p *= 1.0f + displace * bumps(p);
+  for (size_t i = 0; i < m.positions.size(); ++i) {
+    m.positions[i] *= 1.0f + displace * bumps(m.positions[i]);
+    if (i % kStep == kStep - 1) co_await Work{kStep};
+  }
   // Area-weighted vertex normals of the displaced surface; uv by longitude and latitude.
   m.normals.assign(m.positions.size(), glm::vec3(0.0f));
-  for (const glm::uvec3 tri : m.triangles) {
+  for (size_t i = 0; i < m.triangles.size(); ++i) {
+    const glm::uvec3 tri = m.triangles[i];
     const glm::vec3 n = glm::cross(m.positions[tri.y] - m.positions[tri.x], m.positions[tri.z] - m.positions[tri.x]);
     for (int k = 0; k < 3; ++k) m.normals[tri[k]] += n;
+    if (i % kStep == kStep - 1) co_await Work{kStep};
   }
   m.uvs.resize(m.positions.size());
   for (size_t i = 0; i < m.positions.size(); ++i) {
     m.normals[i] = glm::normalize(m.normals[i]);
     const glm::vec3 d = glm::normalize(m.positions[i]);
     m.uvs[i] = glm::vec2(0.5f + std::atan2(d.z, d.x) / 6.2831853f, std::acos(glm::clamp(d.y, -1.0f, 1.0f)) / 3.14159265f);
+    if (i % kStep == kStep - 1) co_await Work{kStep};
   }
+}
+
+MeshData generate_icosphere(int level, float displace) {
+  MeshData m;
+  generate_icosphere_steps(level, displace, m).finish();
   return m;
 }
 

@@ -5,10 +5,14 @@
 // 1,310,720), on the unit sphere, pushed along the normal by a deterministic sum of
 // waves of relative amplitude `displace`; smooth vertex normals and spherical uv.
 #pragma once
+#include "core/resumable.h"
 #include "scene/mesh.h"
 
 namespace pt {
 
 MeshData generate_icosphere(int level, float displace);
+// The same, resumable (core/resumable.h; a unit of work is a triangle or vertex visited);
+// `out` must outlive it.
+Resumable generate_icosphere_steps(int level, float displace, MeshData& out);
 
 }  // namespace pt

@@ -41,6 +41,8 @@ struct Context {
   std::string error;  // "where: what", set by a callback that refused
 };
 
+constexpr long kStep = 4096;  // elements between two checks of the work left
+
 std::string pointer(const char* array, size_t index) { return std::string("/") + array + "/" + std::to_string(index); }
 
 // Buffers by URI: the path is relative to the glTF's folder and goes through the
@@ -116,13 +118,14 @@ class Reader {
 
   // An accessor's elements as floats (normalised integers mapped to [0, 1]), with every
   // offset and size checked against its buffer.
-  std::vector<float> floats(int index, int want_components, const std::string& user) const {
+  // Resumable (a unit: one element); `out` must outlive it.
+  Resumable floats(int index, int want_components, std::string user, std::vector<float>& out) const {
     const tinygltf::Accessor& a = accessor(index, user);
     const std::string at = pointer("accessors", size_t(index));
     const int comps = tinygltf::GetNumComponentsInType(uint32_t(a.type));
     if (comps != want_components) fail(at, "expected " + std::to_string(want_components) + " components (used by " + user + ")");
     const unsigned char* base = checked(a, at);
-    std::vector<float> out(a.count * size_t(comps));
+    out.assign(a.count * size_t(comps), 0.0f);
     const size_t stride = stride_of(a);
     for (size_t i = 0; i < a.count; ++i) {
       const unsigned char* p = base + i * stride;
@@ -142,16 +145,16 @@ class Reader {
         if (!std::isfinite(v)) fail(at, "element " + std::to_string(i) + " is not finite");
         out[i * size_t(comps) + size_t(c)] = v;
       }
+      if (i % kStep == kStep - 1) co_await Work{kStep};
     }
-    return out;
   }
 
-  std::vector<uint32_t> indices(int index, const std::string& user) const {
+  Resumable indices(int index, std::string user, std::vector<uint32_t>& out) const {
     const tinygltf::Accessor& a = accessor(index, user);
     const std::string at = pointer("accessors", size_t(index));
     if (a.type != TINYGLTF_TYPE_SCALAR) fail(at, "indices must be scalars");
     const unsigned char* base = checked(a, at);
-    std::vector<uint32_t> out(a.count);
+    out.assign(a.count, 0u);
     const size_t stride = stride_of(a);
     for (size_t i = 0; i < a.count; ++i) {
       const unsigned char* p = base + i * stride;
@@ -166,8 +169,8 @@ class Reader {
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: std::memcpy(&out[i], p, 4); break;
         default: fail(at, "unsupported index component type " + std::to_string(a.componentType));
       }
+      if (i % kStep == kStep - 1) co_await Work{kStep};
     }
-    return out;
   }
 
  private:
@@ -329,7 +332,8 @@ const char* mode_name(int mode) {
 
 }  // namespace
 
-std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve) {
+Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver resolve, std::vector<GltfPart>& parts) {
+  parts.clear();
   const GltfJson json = gltf_json(bytes, path);
   tinygltf::Model model;
   Context ctx;
@@ -350,7 +354,8 @@ std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& pa
   // Keyed by the accessors a primitive reads: primitives (or meshes) that differ only in
   // material share one MeshData.
   std::map<std::vector<int>, std::shared_ptr<const MeshData>> cache;
-  auto primitive = [&](int mesh, int prim) -> std::shared_ptr<const MeshData> {
+  // A primitive's MeshData, through the cache; `slot` must outlive it.
+  auto primitive = [&](int mesh, int prim, std::shared_ptr<const MeshData>& out) -> Resumable {
     const tinygltf::Primitive& p = model.meshes[size_t(mesh)].primitives[size_t(prim)];
     const std::string at = pointer("meshes", size_t(mesh)) + pointer("primitives", size_t(prim));
     // Points and lines have no area to render, strips and fans are not read: refused
@@ -363,26 +368,41 @@ std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& pa
       key.push_back(it == p.attributes.end() ? -1 : it->second);
     }
     auto& slot = cache[key];
-    if (slot) return slot;
+    if (slot) {
+      out = slot;
+      co_return;
+    }
     auto d = std::make_shared<MeshData>();
     const auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) r.fail(at, "no POSITION attribute");
-    const std::vector<float> v = r.floats(pos->second, 3, at + "/attributes/POSITION");
+    std::vector<float> v, f;
+    Resumable read = r.floats(pos->second, 3, at + "/attributes/POSITION", v);
+    while (!co_await read) {
+    }
     for (size_t i = 0; i + 2 < v.size(); i += 3) d->positions.emplace_back(v[i], v[i + 1], v[i + 2]);
+    co_await Work{long(v.size() / 3)};
     if (auto n = p.attributes.find("NORMAL"); n != p.attributes.end()) {
-      const std::vector<float> f = r.floats(n->second, 3, at + "/attributes/NORMAL");
+      read = r.floats(n->second, 3, at + "/attributes/NORMAL", f);
+      while (!co_await read) {
+      }
       if (f.size() != v.size()) r.fail(at, "NORMAL and POSITION counts differ");
       for (size_t i = 0; i + 2 < f.size(); i += 3) d->normals.emplace_back(f[i], f[i + 1], f[i + 2]);
+      co_await Work{long(f.size() / 3)};
     }
     if (auto t = p.attributes.find("TEXCOORD_0"); t != p.attributes.end()) {
-      const std::vector<float> f = r.floats(t->second, 2, at + "/attributes/TEXCOORD_0");
+      read = r.floats(t->second, 2, at + "/attributes/TEXCOORD_0", f);
+      while (!co_await read) {
+      }
       if (f.size() / 2 != d->positions.size()) r.fail(at, "TEXCOORD_0 and POSITION counts differ");
       // glTF's v runs down from the image's top row, ours up from its bottom row.
       for (size_t i = 0; i + 1 < f.size(); i += 2) d->uvs.emplace_back(f[i], 1.0f - f[i + 1]);
+      co_await Work{long(f.size() / 2)};
     }
     std::vector<uint32_t> idx;
     if (p.indices >= 0) {
-      idx = r.indices(p.indices, at + "/indices");
+      read = r.indices(p.indices, at + "/indices", idx);
+      while (!co_await read) {
+      }
     } else {
       idx.resize(d->positions.size());
       for (size_t i = 0; i < idx.size(); ++i) idx[i] = uint32_t(i);
@@ -394,11 +414,11 @@ std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& pa
           r.fail(p.indices >= 0 ? pointer("accessors", size_t(p.indices)) : at,
                  "index " + std::to_string(idx[i + size_t(k)]) + " is not a vertex (there are " + std::to_string(d->positions.size()) + ")");
       d->triangles.emplace_back(idx[i], idx[i + 1], idx[i + 2]);
+      if (i % (3 * kStep) == 0) co_await Work{kStep};
     }
     slot = d;
-    return slot;
+    out = slot;
   };
-  std::vector<GltfPart> parts;
   // Depth-first over the node tree. glTF requires a tree (no node has two parents), so a
   // node reached twice is an error: that stops cycles and exponential fan-outs alike.
   struct Item {
@@ -431,7 +451,10 @@ std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& pa
       if (size_t(n.mesh) >= model.meshes.size()) r.fail(at, "no mesh " + std::to_string(n.mesh));
       const tinygltf::Mesh& mesh = model.meshes[size_t(n.mesh)];
       for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-        std::shared_ptr<const MeshData> d = primitive(n.mesh, int(p));
+        std::shared_ptr<const MeshData> d;
+        Resumable convert = primitive(n.mesh, int(p), d);
+        while (!co_await convert) {
+        }
         const std::string pat = pointer("meshes", size_t(n.mesh)) + pointer("primitives", p);
         const GltfMaterial& mat = materials.get(mesh.primitives[p].material, pat + "/material");
         if ((mat.base_color_map || mat.metallic_roughness_map || mat.normal_map) && d->uvs.empty())
@@ -442,6 +465,11 @@ std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& pa
     for (int c : n.children) todo.push_back({c, world, at + "/children"});
   }
   if (parts.empty()) throw InputError(path, 0, "no triangles in the default scene");
+}
+
+std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve) {
+  std::vector<GltfPart> parts;
+  parse_gltf_steps(bytes, path, resolve, parts).finish();
   return parts;
 }
 

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "core/image.h"
+#include "core/resumable.h"
 #include "scene/mesh.h"
 
 namespace pt {
@@ -51,5 +52,9 @@ using GltfResolver = std::function<std::string(const std::string& path)>;
 std::vector<GltfPart> load_gltf(const std::string& path, const GltfResolver& resolve);
 // From memory; binary glTF is told from JSON by its magic ("glTF"), not by the name.
 std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve);
+// The same, resumable (core/resumable.h; a unit is an element of an accessor). tinygltf's
+// own parse (JSON, base64 data: URIs, buffers) is one step; the conversion of the
+// accessors is sliced. `parts` must outlive it.
+Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver resolve, std::vector<GltfPart>& parts);
 
 }  // namespace pt

@@ -25,6 +25,8 @@
 namespace pt {
 namespace {
 
+constexpr int kStepLines = 1024;  // lines (or faces) between two checks of the work left
+
 // tinyobjloader accepts almost anything (unknown statements, "nan", indices past the
 // end, all skipped or clamped silently). This pass reads the text first, strictly, so
 // that an error names its line: known statements only, finite numbers of sane size, and
@@ -33,7 +35,8 @@ class ObjChecker {
  public:
   ObjChecker(const std::string& path) : path_(path) {}
 
-  void check(const std::string& text) {
+  // Resumable (a unit: a byte of text); `text` must outlive it.
+  Resumable check(const std::string& text) {
     size_t i = 0;
     while (i < text.size()) {
       ++line_;
@@ -45,6 +48,7 @@ class ObjChecker {
       const size_t hash = l.find('#');
       if (hash != std::string::npos) l.resize(hash);
       statement(split(l));
+      if (line_ % kStepLines == 0) co_await Work{long(i - last_)}, last_ = i;
     }
     if (faces_ == 0) {
       line_ = std::max(line_, 1);
@@ -145,14 +149,19 @@ class ObjChecker {
   }
 
   const std::string& path_;
+  size_t last_ = 0;  // the offset of the last check of the work left
   int line_ = 0;
   long v_ = 0, vt_ = 0, vn_ = 0, faces_ = 0;
 };
 
 }  // namespace
 
-MeshData parse_mesh_obj(const std::string& text, const std::string& path) {
-  ObjChecker(path).check(text);
+Resumable parse_mesh_obj_steps(std::string text, std::string path, MeshData& m) {
+  m = MeshData();
+  ObjChecker checker(path);
+  Resumable check = checker.check(text);
+  while (!co_await check) {
+  }
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
@@ -181,7 +190,6 @@ MeshData parse_mesh_obj(const std::string& text, const std::string& path) {
   // index per vertex, so each distinct (v, vt, vn) triple becomes one vertex. Corners of
   // faces without vt or vn (where other faces have them) get uv 0 and a zero normal,
   // which the packer leaves out: those triangles shade with their geometric normal.
-  MeshData m;
   std::map<std::tuple<int, int, int>, unsigned> vertex_of;
   auto vertex = [&](const tinyobj::index_t& c, size_t face) -> unsigned {
     if (c.vertex_index < 0 || size_t(c.vertex_index) >= positions.size())
@@ -218,9 +226,15 @@ MeshData parse_mesh_obj(const std::string& text, const std::string& path) {
       glm::uvec3 tri;
       for (int k = 0; k < 3; ++k) tri[k] = vertex(idx[f + size_t(k)], f / 3);  // in order: vertices number as first used
       m.triangles.push_back(tri);
+      if (m.triangles.size() % kStepLines == 0) co_await Work{16 * kStepLines};  // about the bytes of text of as many faces
     }
   }
   if (m.triangles.empty()) throw InputError(path, 0, "no faces");
+}
+
+MeshData parse_mesh_obj(const std::string& text, const std::string& path) {
+  MeshData m;
+  parse_mesh_obj_steps(text, path, m).finish();
   return m;
 }
 

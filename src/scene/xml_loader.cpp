@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <filesystem>
 #include <map>
+#include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -187,10 +189,72 @@ void parse_emit(Loader&, XmlAttrs& a, const XMLElement* e, Material& m) {
   m.emission = color * intensity;
 }
 
+bool has_extension(const std::string& path, const char* ext) {
+  const size_t n = std::strlen(ext);
+  if (path.size() <= n) return false;
+  for (size_t i = 0; i < n; ++i)
+    if (std::tolower(static_cast<unsigned char>(path[path.size() - n + i])) != ext[i]) return false;
+  return true;
+}
+
+// What a <Mesh> reads or generates: the key of the scene's mesh cache and how to make it.
+struct MeshSource {
+  std::string key;
+  std::string src;  // the resolved path; empty when generated
+  int level = 0;    // generated: subdivisions and displacement
+  float displace = 0.0f;
+};
+
+// A mesh file (or generated mesh), loaded once per scene however many <Mesh> use it.
+struct MeshEntry {
+  bool loaded = false;
+  bool used = false;  // its files are in the scene's list
+  std::vector<GltfPart> parts;
+  std::vector<std::string> files;  // the files it read besides src (a glTF's buffers and images)
+  std::optional<std::string> error;  // why it could not be loaded
+};
+
+// Resumable (a unit: about a triangle, vertex or byte); `e` must outlive it.
+Resumable load_mesh_steps(MeshSource m, MeshEntry& e) {
+  e = MeshEntry();
+  try {
+    auto d = std::make_shared<MeshData>();
+    if (m.src.empty()) {
+      Resumable g = generate_icosphere_steps(m.level, m.displace, *d);
+      while (!co_await g) {
+      }
+      e.parts.push_back({std::move(d), glm::mat4(1.0f), {}});
+    } else {
+      std::optional<std::string> bytes = read_file(m.src);
+      if (!bytes) throw InputError(m.src, 0, "cannot open the mesh file");
+      if (has_extension(m.src, ".gltf") || has_extension(m.src, ".glb")) {
+        // The glTF's own buffer and image files are dependencies too (watch reloads on their change).
+        Resumable g = parse_gltf_steps(std::move(*bytes), m.src, [&e](const std::string& f) {
+          e.files.push_back(f);
+          return f;
+        }, e.parts);
+        while (!co_await g) {
+        }
+      } else if (has_extension(m.src, ".obj")) {
+        Resumable o = parse_mesh_obj_steps(std::move(*bytes), m.src, *d);
+        while (!co_await o) {
+        }
+        e.parts.push_back({std::move(d), glm::mat4(1.0f), {}});
+      } else {
+        e.parts.push_back({std::make_shared<const MeshData>(parse_mesh_json(*bytes, m.src)), glm::mat4(1.0f), {}});  // the seed's small meshes: one step
+      }
+    }
+  } catch (const InputError& err) {
+    e.parts.clear();
+    e.error = err.what();
+  }
+  e.loaded = true;
+}
+
 struct Loader {
   std::string file;
   Scene scene;
-  std::map<std::string, std::vector<GltfPart>> mesh_files;  // loaded once per path
+  std::map<std::string, MeshEntry> mesh_files;  // loaded once per path (or generator and parameters)
 
   bool allow_files = true;  // false: any file reference is an error (fuzzing, untrusted text)
   int composite_depth = 0;  // FresnelComposites being parsed around the current element
@@ -314,59 +378,45 @@ struct Loader {
     return int(scene.materials.size()) - 1;
   }
 
+  // The source of a <Mesh> (also read ahead by SceneLoad, which loads it before the scene
+  // is built); throws InputError for a malformed one.
+  MeshSource mesh_source(XmlAttrs& a, const XMLElement* e) {
+    MeshSource m;
+    if (e->Attribute("generate") == nullptr) {
+      m.src = m.key = resolve_path(a, a.text("src"));
+      if (!has_extension(m.src, ".gltf") && !has_extension(m.src, ".glb") && !has_extension(m.src, ".obj") && !has_extension(m.src, ".json"))
+        a.fail("'src' must be a .json (the seed's format), .obj, .gltf or .glb mesh");
+      return m;
+    }
+    if (e->Attribute("src")) a.fail("takes 'src' or 'generate', not both");
+    if (a.text("generate") != "icosphere") a.fail("'generate' must be \"icosphere\"");
+    // Checked as a number before the conversion: a float beyond int's range does not convert.
+    const float lf = a.number("level", 5.0f);
+    m.displace = a.number("displace", 0.0f);
+    if (!(lf >= 0.0f && lf <= 9.0f && lf == std::floor(lf))) a.fail("'level' must be an integer in 0..9 (20 * 4^level triangles)");
+    m.level = int(lf);
+    if (!(m.displace >= 0.0f && m.displace < 0.5f)) a.fail("'displace' must be in [0, 0.5)");
+    m.key = "generate:icosphere:" + std::to_string(m.level) + ":" + std::to_string(m.displace);
+    return m;
+  }
+
   void mesh(const XMLElement* e) {
     XmlAttrs a(e, file);
-    const bool generated = e->Attribute("generate") != nullptr;
-    const std::string src = generated ? std::string() : resolve_path(a, a.text("src"));
+    const MeshSource source = mesh_source(a, e);
     const glm::vec3 position = a.vec3("position", glm::vec3(0.0f));
     const glm::vec3 rotation = a.vec3("rotation", glm::vec3(0.0f));
     const float scale = a.number("scale", 1.0f);
     if (!(scale > 0.0f)) a.fail("'scale' must be positive");
-    std::string key = src;
-    int level = 0;
-    float displace = 0.0f;
-    if (generated) {
-      if (e->Attribute("src")) a.fail("takes 'src' or 'generate', not both");
-      if (a.text("generate") != "icosphere") a.fail("'generate' must be \"icosphere\"");
-      // Checked as a number before the conversion: a float beyond int's range does not convert.
-      const float lf = a.number("level", 5.0f);
-      displace = a.number("displace", 0.0f);
-      if (!(lf >= 0.0f && lf <= 9.0f && lf == std::floor(lf))) a.fail("'level' must be an integer in 0..9 (20 * 4^level triangles)");
-      level = int(lf);
-      if (!(displace >= 0.0f && displace < 0.5f)) a.fail("'displace' must be in [0, 0.5)");
-      key = "generate:icosphere:" + std::to_string(level) + ":" + std::to_string(displace);
-    }
     a.finish();
-    auto ends = [&](const char* ext) {
-      const size_t n = std::strlen(ext);
-      if (src.size() <= n) return false;
-      for (size_t i = 0; i < n; ++i)
-        if (std::tolower(static_cast<unsigned char>(src[src.size() - n + i])) != ext[i]) return false;
-      return true;
-    };
-    const bool gltf = ends(".gltf") || ends(".glb");
-    if (!generated && !gltf && !ends(".obj") && !ends(".json"))
-      a.fail("'src' must be a .json (the seed's format), .obj, .gltf or .glb mesh");
+    const bool gltf = has_extension(source.src, ".gltf") || has_extension(source.src, ".glb");
     const XMLElement* m = e->FirstChildElement();
     if ((!m && !gltf) || (m && m->NextSiblingElement())) a.fail(gltf ? "takes at most one material element inside" : "needs exactly one material element inside");
-    std::vector<GltfPart>& parts = mesh_files[key];
-    if (parts.empty()) {
-      try {
-        if (generated) {
-          parts.push_back({std::make_shared<const MeshData>(generate_icosphere(level, displace)), glm::mat4(1.0f), {}});
-        } else if (gltf) {
-          // The glTF's own buffer and image files are dependencies too (watch reloads on their change).
-          parts = load_gltf(src, [this](const std::string& p) {
-            scene.files.push_back(p);
-            return p;
-          });
-        } else {
-          parts.push_back({std::make_shared<const MeshData>(ends(".obj") ? load_mesh_obj(src) : load_mesh_json(src)), glm::mat4(1.0f), {}});
-        }
-      } catch (const InputError& err) {
-        a.fail(std::string("cannot load the mesh: ") + err.what());
-      }
-    }
+    MeshEntry& entry = mesh_files[source.key];
+    if (!entry.loaded) load_mesh_steps(source, entry).finish();  // else SceneLoad read it ahead
+    if (entry.error) a.fail("cannot load the mesh: " + *entry.error);
+    if (!entry.used) scene.files.insert(scene.files.end(), entry.files.begin(), entry.files.end());
+    entry.used = true;
+    const std::vector<GltfPart>& parts = entry.parts;
     glm::mat4 place = glm::translate(glm::mat4(1.0f), position);
     place = glm::rotate(place, glm::radians(rotation.z), glm::vec3(0, 0, 1));
     place = glm::rotate(place, glm::radians(rotation.y), glm::vec3(0, 1, 0));
@@ -375,9 +425,18 @@ struct Loader {
     const int shared_material = m ? material(m, glm::vec3(1.0f)) : -1;
     for (const GltfPart& part : parts) {
       const glm::mat4 world = place * part.transform;
-      for (const glm::vec3& v : part.mesh->positions)
-        if (!glm::all(glm::lessThanEqual(glm::abs(glm::vec3(world * glm::vec4(v, 1.0f))), glm::vec3(kMaxMagnitude))))  // NaN too
-          a.fail("scaled and moved, the mesh has a vertex beyond 1e9");
+      auto within = [&](glm::vec3 v) {  // false for NaN too
+        return glm::all(glm::lessThanEqual(glm::abs(glm::vec3(world * glm::vec4(v, 1.0f))), glm::vec3(kMaxMagnitude)));
+      };
+      // The corners of the mesh's box bound every vertex (an affine map's extremes over a
+      // box are at its corners): each vertex is looked at only when a corner is out.
+      glm::vec3 lo(INFINITY), hi(-INFINITY);
+      for (const glm::vec3& v : part.mesh->positions) lo = glm::min(lo, v), hi = glm::max(hi, v);
+      bool corners_within = true;
+      for (int c = 0; c < 8; ++c) corners_within &= within(glm::vec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z));
+      if (!corners_within)
+        for (const glm::vec3& v : part.mesh->positions)
+          if (!within(v)) a.fail("scaled and moved, the mesh has a vertex beyond 1e9");
       Shape s;
       s.kind = ShapeKind::Mesh;
       s.mesh = mesh_index(part.mesh);
@@ -589,13 +648,27 @@ static void reject_text(const tinyxml2::XMLNode* n, const std::string& path) {
   }
 }
 
-Scene load_scene_text(const std::string& text, const std::string& path, bool allow_files) {
+struct SceneLoad::State {
+  std::string path;
+  tinyxml2::XMLDocument doc;
+  Loader loader;
+  std::vector<MeshSource> sources;  // in the order of the document, each key once
+  std::vector<double> estimate;     // units each is expected to take
+  size_t current = 0;               // the source being loaded
+  size_t last_current = 0;
+  double spent = 0.0;               // units given to the current source so far
+  double progress = 0.0;            // never goes back
+  std::string stage;
+  Scene scene;
+};
+
+SceneLoad::SceneLoad(const std::string& text, const std::string& path, bool allow_files) : s_(std::make_unique<State>()) {
   // tinyxml2 stops at a NUL byte and accepts what came before: a NUL is an error here.
   const size_t nul = text.find('\0');
   if (nul != std::string::npos)
     throw InputError(path, 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(nul), '\n')),
                      "NUL byte at byte " + std::to_string(nul) + " (not a text file?)");
-  tinyxml2::XMLDocument doc;
+  tinyxml2::XMLDocument& doc = s_->doc;
   if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
     // ErrorStr() is "Error=NAME ErrorID=.. Line number=N[: detail]": keep NAME and detail.
     const std::string full = doc.ErrorStr() ? doc.ErrorStr() : "";
@@ -604,23 +677,96 @@ Scene load_scene_text(const std::string& text, const std::string& path, bool all
     throw InputError(path, std::max(1, doc.ErrorLineNum()), "malformed XML: " + why);
   }
   reject_text(&doc, path);
-  Loader l;
+  s_->path = path;
+  Loader& l = s_->loader;
   l.allow_files = allow_files;
   l.file = path;
   l.scene.path = path;
   l.scene.files = {path};
-  l.root(doc.RootElement());
-  return std::move(l.scene);
+  // Read ahead: every <Mesh> with a well-formed source, wherever it is. One that is not
+  // (or is somewhere a mesh is not allowed) is left to the scene's own pass, which says why.
+  Loader ahead;
+  ahead.allow_files = allow_files;
+  ahead.file = path;
+  std::vector<const XMLElement*> todo{doc.RootElement()};
+  while (!todo.empty()) {
+    const XMLElement* e = todo.back();
+    todo.pop_back();
+    for (const XMLElement* c = e ? e->LastChildElement() : nullptr; c; c = c->PreviousSiblingElement()) todo.push_back(c);
+    if (!e || std::strcmp(e->Name(), "Mesh") != 0) continue;
+    try {
+      XmlAttrs a(e, path);
+      MeshSource m = ahead.mesh_source(a, e);
+      if (std::none_of(s_->sources.begin(), s_->sources.end(), [&](const MeshSource& o) { return o.key == m.key; })) {
+        double units = 1.0;
+        if (m.src.empty()) {
+          const double tris = 20.0 * std::pow(4.0, m.level);
+          units = tris * (4.0 / 3.0 + 1.0) + 2.0 * (tris / 2.0);  // subdivisions, normals; displacement and uv per vertex
+        } else {
+          std::error_code ec;
+          const auto bytes = std::filesystem::file_size(m.src, ec);
+          if (!ec) units = double(bytes) * (has_extension(m.src, ".obj") ? 1.5 : 0.4);
+        }
+        s_->sources.push_back(std::move(m));
+        s_->estimate.push_back(std::max(1.0, units));
+      }
+    } catch (const InputError&) {
+    }
+  }
+  job_ = steps();
 }
 
-Scene load_scene_file(const std::string& path) {
-  const auto text = read_file(path);
+SceneLoad::~SceneLoad() = default;
+
+Resumable SceneLoad::steps() {
+  State& s = *s_;
+  for (s.current = 0; s.current < s.sources.size(); ++s.current) {
+    const MeshSource& m = s.sources[s.current];
+    s.stage = m.src.empty() ? "generating the mesh" : "reading " + m.src.substr(m.src.find_last_of('/') + 1);
+    Resumable load = load_mesh_steps(m, s.loader.mesh_files[m.key]);
+    while (!co_await load) {
+    }
+  }
+  s.stage = "building the scene";
+  co_await Work{0};
+  s.loader.root(s.doc.RootElement());
+  s.scene = std::move(s.loader.scene);
+}
+
+bool SceneLoad::run(long work) {
+  State& s = *s_;
+  s.spent += double(work);
+  const bool done = job_.run(work);
+  if (s.current != s.last_current) s.spent = 0.0, s.last_current = s.current;  // the units went mostly to the next source
+  if (!done && s.current < s.sources.size())
+    s.progress = std::max(s.progress, (double(s.current) + std::min(0.99, s.spent / s.estimate[s.current])) / double(s.sources.size()));
+  return done;
+}
+
+bool SceneLoad::done() const { return job_.done(); }
+
+double SceneLoad::progress() const { return job_.done() ? 1.0 : std::min(0.99, s_->progress); }
+
+const std::string& SceneLoad::stage() const { return s_->stage; }
+
+Scene SceneLoad::take() { return std::move(s_->scene); }
+
+Scene load_scene_text(const std::string& text, const std::string& path, bool allow_files) {
+  SceneLoad l(text, path, allow_files);
+  l.finish();
+  return l.take();
+}
+
+std::string read_scene_file(const std::string& path) {
+  auto text = read_file(path);
   if (!text) throw InputError(path, 0, "cannot open the scene file");
   // Meshes and images are separate files: a scene this large is not a scene.
   if (text->size() > kMaxSceneBytes)
     throw InputError(path, 0, "the scene file has " + std::to_string(text->size()) + " bytes (at most " +
                                   std::to_string(kMaxSceneBytes) + ")");
-  return load_scene_text(*text, path);
+  return std::move(*text);
 }
+
+Scene load_scene_file(const std::string& path) { return load_scene_text(read_scene_file(path), path); }
 
 }  // namespace pt

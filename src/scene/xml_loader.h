@@ -1,6 +1,8 @@
 #pragma once
+#include <memory>
 #include <string>
 
+#include "core/resumable.h"
 #include "scene/scene.h"
 
 namespace pt {
@@ -12,5 +14,32 @@ Scene load_scene_file(const std::string& path);
 // allow_files = false refuses every file reference (<Mesh src>, <Environment map>): for
 // text from an untrusted source, and for the fuzzer.
 Scene load_scene_text(const std::string& text, const std::string& path, bool allow_files = true);
+// The scene file's text (throws InputError: missing, or over kMaxSceneBytes).
+std::string read_scene_file(const std::string& path);
+
+// The same load in slices, for a page that must not stop drawing for a large mesh: the
+// constructor parses and checks the XML (throws InputError), then run(work) reads or
+// generates the meshes the scene names (a unit: about a triangle, vertex or byte; see
+// core/resumable.h) and finally builds the scene, throwing InputError as
+// load_scene_text would (the same code: load_scene_text runs it in one go).
+class SceneLoad {
+ public:
+  SceneLoad(const std::string& text, const std::string& path, bool allow_files = true);
+  ~SceneLoad();
+  SceneLoad(const SceneLoad&) = delete;
+  SceneLoad& operator=(const SceneLoad&) = delete;
+  bool run(long work);  // true once the scene is built
+  void finish() { job_.finish(); }
+  bool done() const;
+  double progress() const;         // 0..1, by the meshes read so far
+  const std::string& stage() const;  // "reading model.glb", ...
+  Scene take();                    // once done()
+
+ private:
+  Resumable steps();
+  struct State;
+  std::unique_ptr<State> s_;
+  Resumable job_;
+};
 
 }  // namespace pt
