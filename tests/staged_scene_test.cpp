@@ -80,3 +80,34 @@ TEST_CASE("staging a scene beyond the GPU's texture size throws before making an
   small.max_texture_size = kDataWidth / 2;  // every record texture is kDataWidth wide
   CHECK_THROWS_WITH(StagedScene(small, p), Catch::Contains("the scene's objects") && Catch::Contains("GL_MAX_TEXTURE_SIZE"));
 }
+
+// The page's edits of values (a colour, a roughness, a light's colour, the environment's
+// colour) re-upload only the shape, material and light records: the image is bit for bit
+// that of the edited scene set from scratch. An edit that changes which shapes are lights
+// is refused (the caller then sets the scene).
+TEST_CASE("an edit of values updates the records in place and renders as the edited scene set anew", "[gpu][staging]") {
+  test_gl();
+  Scene scene = load_scene_text(kScene, "staged.xml", false);
+  Renderer r;
+  r.set_scene(scene);
+  const std::vector<float> before = render(r, 2);
+  const size_t programs = r.programs_compiled();
+  for (const Shape& s : scene.shapes)
+    if (s.kind == ShapeKind::Sphere && s.light < 0) scene.materials[size_t(s.material)].tint = glm::vec3(0.2f, 0.9f, 0.3f);
+  scene.lights[0].color = glm::vec3(1.0f, 0.5f, 0.25f);
+  sync_light(scene, 0);
+  scene.environment.color = glm::vec3(0.1f, 0.2f, 0.3f);
+  REQUIRE(r.update_values(scene));
+  const std::vector<float> edited = render(r, 2);
+  CHECK(edited != before);
+  CHECK(r.programs_compiled() == programs);
+  Renderer fresh;
+  fresh.set_scene(scene);
+  CHECK(render(fresh, 2) == edited);
+
+  Scene dark = scene;  // the light goes out: its sphere is no longer a sampled light
+  for (const Shape& s : dark.shapes)
+    if (s.light >= 0) dark.materials[size_t(s.material)].emission = glm::vec3(0.0f);
+  CHECK_FALSE(r.update_values(dark));
+  CHECK(render(r, 2) == edited);  // refused: nothing changed
+}

@@ -239,13 +239,13 @@ void App::handle_input(double dt_s) {
 // Values of the scene: editing them re-packs its data and restarts, never recompiles
 // (the program depends only on the kinds present). Ranges follow the seed's sliders.
 void App::draw_scene_controls() {
-  bool edited = false;
+  bool edited = false, moved = false;
   if (!scene_.lights.empty() && ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) {
     Light& l = scene_.lights[0];
-    bool changed = ImGui::SliderFloat3("position", &l.position.x, -300.0f, 300.0f);
-    changed |= ImGui::ColorEdit3("colour", &l.color.x);
+    moved = ImGui::SliderFloat3("position", &l.position.x, -300.0f, 300.0f);
+    bool changed = ImGui::ColorEdit3("colour", &l.color.x);
     changed |= ImGui::SliderFloat("intensity", &l.intensity, 0.0f, 300.0f);
-    if (changed) {
+    if (changed || moved) {
       sync_light(scene_, 0);
       edited = true;
     }
@@ -259,10 +259,7 @@ void App::draw_scene_controls() {
     changed |= ImGui::SliderFloat("shutter", &cam.shutter, 0.0f, 1.0f);
     if (changed) renderer_->set_camera(cam);
   }
-  if (edited) {
-    renderer_->set_scene(scene_);  // the same kinds: the cached program is reused
-    renderer_->set_camera(cam);    // keep the view the user flew to
-  }
+  if (edited) scene_edited(moved);
 }
 
 void App::draw_panel() {

@@ -97,6 +97,7 @@ class App {
   void start_loading(Scene scene, bool keep_camera);
   void apply_scene(Scene scene, const PackedScene& packed, StagedScene* staged, const std::optional<Camera>& camera);
   void poll_loading();
+  void scene_edited(bool geometry);  // after a panel changed scene_
   void draw_loading();
   void handle_click();
   void draw_selection_panel(int fb_w);
@@ -151,6 +152,7 @@ class App {
     std::optional<PackedScene> packed;
     std::unique_ptr<StagedScene> staged;  // its record textures, uploaded a band per frame
     bool keep_camera = false;      // the view then is kept, else the scene's is shown
+    bool edit = false;             // an edit of the shown scene (scene_edited), not a load
     std::chrono::steady_clock::time_point since;  // when it was asked for
     double work_ms = 0.0;           // time spent in slices of the packing
     double longest_slice_ms = 0.0;  // the longest slice of any stage, and its stage

@@ -118,7 +118,13 @@ void App::poll_loading() {
     std::optional<Camera> camera;
     if (l.keep_camera) camera = renderer_->camera();
     const auto t1 = std::chrono::steady_clock::now();
-    apply_scene(std::move(*l.scene), *l.packed, l.staged.get(), camera);  // throws before changing anything if the program does not build
+    if (l.edit) {  // scene_ is the edited scene (or newer): only the renderer changes
+      renderer_->set_scene(*l.scene, *l.packed, l.staged.get());
+      renderer_->set_camera(*camera);
+      shown_ = true;
+    } else {
+      apply_scene(std::move(*l.scene), *l.packed, l.staged.get(), camera);  // throws before changing anything if the program does not build
+    }
     last_load_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - l.since).count();
     last_pack_work_ms_ = l.work_ms;
     last_slices_ = l.slices;
@@ -237,17 +243,17 @@ void App::draw_selection_panel(int fb_w) {
   ImGui::Text("%s #%d (line %d)", info(sh.kind).xml, selected_, sh.line);
   ImGui::Text("material: %s", info(m.kind).xml);
   const float speed = 0.005f * std::max(1.0f, glm::length(renderer_->camera().position));
-  bool edited = false;
+  bool edited = false, moved = false;
   glm::vec3 p = shape_position(sh);
   if (ImGui::DragFloat3("position", &p.x, speed, 0.0f, 0.0f, "%.2f")) {
     move_shape(scene_, selected_, p);
-    edited = true;
+    edited = moved = true;
   }
   if (sh.kind == ShapeKind::Sphere) {
     float r = sh.radius;
     if (ImGui::DragFloat("radius", &r, speed * 0.2f, 1e-4f, 1e6f, "%.3f")) {
       set_sphere_radius(scene_, selected_, r);
-      edited = true;
+      edited = moved = true;
     }
   }
   const MaterialFields f = material_fields(m.kind);
@@ -259,11 +265,18 @@ void App::draw_selection_panel(int fb_w) {
   ImGui::PopItemWidth();
   ImGui::End();
   if (!open) selected_ = -1;
-  if (edited) {
-    const Camera cam = renderer_->camera();
-    renderer_->set_scene(scene_);  // the same kinds: the cached program is reused
-    renderer_->set_camera(cam);
-  }
+  if (edited) scene_edited(moved);
+}
+
+// Values (materials, emission, the environment) go to the renderer at once; a change of
+// geometry re-packs the scene in slices like a load, the view kept and the current image
+// rendering meanwhile (a small scene is packed within the frame; a large one's BVH is
+// rebuilt over several). Either way the program is the cached one: the kinds are the same.
+void App::scene_edited(bool geometry) {
+  if (loading_ && !loading_->edit) return;  // another scene on its way replaces this one
+  if (!geometry && !loading_ && renderer_->update_values(scene_)) return;
+  start_loading(scene_, true);  // replaces an edit in progress: scene_ has both
+  loading_->edit = true;
 }
 
 // Resolution scale, the sample target's estimated time, and a compiling indicator.

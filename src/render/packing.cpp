@@ -303,6 +303,13 @@ PackedScene PackJob::take() {
   return std::move(p_);
 }
 
+PackedScene pack_values(const Scene& scene) {
+  PackedScene p;
+  pack_materials(scene, p);
+  pack_shapes(scene, p);
+  return p;
+}
+
 PackedScene pack_scene(const Scene& scene) {
   PackJob job(scene);
   while (!job.run(LONG_MAX)) {  // (long is 32 bits in wasm)

@@ -27,6 +27,9 @@ struct PackedScene {
 inline constexpr int kBvhStackSize = 48;
 
 PackedScene pack_scene(const Scene& scene);  // runs a PackJob to completion
+// Only the shape, material and light records (no BVH, primitives or vertices): what an
+// edit of values - materials, emission - changes (Renderer::update_values).
+PackedScene pack_values(const Scene& scene);
 
 // pack_scene in slices, so that a page packs a large scene a few milliseconds at a time
 // while the previous one keeps rendering: run(work) does at most about `work` units (one

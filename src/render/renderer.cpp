@@ -20,6 +20,12 @@ enum Unit {
 
 // The sizes were checked against limits_ in set_scene, before any state changed (uv
 // records take 2 texels per shape where shape records take 4: covered by the shapes' check).
+// The shape a light record names.
+int light_shape(const RecordBuffer& lights, int i) {
+  const Field& f = light_rec::shape;
+  return int(lights.raw()[(size_t(i) * size_t(light_rec::kTexels) + size_t(f.texel)) * 4 + size_t(f.comp)]);
+}
+
 Texture upload(const RecordBuffer& b) {
   const std::vector<float> t = b.texels();
   return Texture(kDataWidth, b.rows(), GL_RGBA32F, t.data());
@@ -129,11 +135,6 @@ void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* 
     throw;
   }
   have_scene_ = true;
-  const Environment& e = scene.environment;
-  if (e.map != env_.map || e.color != env_.color || e.rotation != env_.rotation || e.intensity != env_.intensity)
-    sh_valid_ = false;
-  env_ = e;
-  update_sh();
   staged->upload(std::numeric_limits<int>::max());  // nothing left when staged ahead
   shape_tex_ = std::move(staged->shapes);
   material_tex_ = std::move(staged->materials);
@@ -149,13 +150,24 @@ void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* 
     uv_tex_ = Texture();
   }
   num_lights_ = p.lights.count();
+  num_shapes_ = p.shapes.count();
+  light_shapes_.clear();
+  for (int i = 0; i < num_lights_; ++i) light_shapes_.push_back(light_shape(p.lights, i));
   num_unbounded_ = p.unbounded;
   num_nodes_ = p.nodes.count();
   motion_bound_ = p.motion_bound;
   bvh_stats_ = {p.prims.count() - p.unbounded, p.nodes.count(), p.bvh_depth, p.bvh_build_ms};
   dot_weight_ = scene.dot_weight;
-  env_color_ = scene.environment.color;
-  const Environment& env = scene.environment;
+  set_environment(scene.environment);
+  camera_ = scene.camera;
+  restart();
+}
+
+void Renderer::set_environment(const Environment& env) {
+  if (env.map != env_.map || env.color != env_.color || env.rotation != env_.rotation || env.intensity != env_.intensity)
+    sh_valid_ = false;
+  env_ = env;
+  env_color_ = env.color;
   if (env.map) {
     // Re-upload only for a different image: rotation and intensity are uniforms.
     if (env_source_ != env.map) {
@@ -169,8 +181,25 @@ void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* 
     env_rotation_ = glm::radians(env.rotation);
     env_intensity_ = env.intensity;
   }
-  camera_ = scene.camera;
+  update_sh();
+}
+
+bool Renderer::update_values(const Scene& scene) {
+  const Features f = Features::of(scene);  // the program must stay the same
+  if (!have_scene_ || f.shapes != features_.shapes || f.materials != features_.materials || f.lights != features_.lights ||
+      f.env_map != features_.env_map || f.motion != features_.motion || scene.environment.map != env_.map)
+    return false;
+  PackedScene p = pack_values(scene);
+  if (p.lights.count() != num_lights_ || p.shapes.count() != num_shapes_) return false;
+  // The same shapes must be lights, in the same order (each light record names its shape).
+  for (int i = 0; i < num_lights_; ++i)
+    if (light_shape(p.lights, i) != light_shapes_[size_t(i)]) return false;
+  shape_tex_ = upload(p.shapes);
+  material_tex_ = upload(p.materials);
+  light_tex_ = upload(p.lights);
+  set_environment(scene.environment);
   restart();
+  return true;
 }
 
 void Renderer::set_camera(const Camera& camera) {

@@ -48,6 +48,12 @@ class Renderer {
   // in slices across frames, then swaps it in here at once), and its record textures
   // uploaded ahead when `staged` is given and done (render/staged_scene.h; taken from it).
   void set_scene(const Scene& scene, const PackedScene& packed, StagedScene* staged = nullptr);
+  // An edit of the last scene set that changed values only - materials (emission
+  // included), the environment - and no shape's geometry: the shape, material and light
+  // records are packed and uploaded again (one per shape, material, light: no BVH), and
+  // the estimate restarts. false, changing nothing, when the edit needs set_scene: other
+  // kinds, or another set of shapes being lights (an emission turned on or off).
+  bool update_values(const Scene& scene);
   // Starts building the program for the scene's kinds without waiting for the driver;
   // true when set_scene(scene) will not block on it (always, without
   // KHR_parallel_shader_compile). A page polls this once a frame and keeps drawing.
@@ -124,6 +130,7 @@ class Renderer {
   bool program_ready_for(const Features& f);
   void select_program();  // the cached (or newly built) program for features_ + settings_.mode
   void update_sh();       // the environment's SH coefficients, when the mode needs them
+  void set_environment(const Environment& env);  // its textures (a new map only) and uniforms
   Features features_;
   bool have_scene_ = false;
   Environment env_;       // as last set (for the SH projection)
@@ -153,7 +160,8 @@ class Renderer {
   int sweep_spp_ = 1;     // samples per pixel of the sweep in progress
   bool needs_clear_ = true;
   int width_ = 0, height_ = 0;
-  int num_lights_ = 0, num_unbounded_ = 0, num_nodes_ = 0;
+  int num_lights_ = 0, num_unbounded_ = 0, num_nodes_ = 0, num_shapes_ = 0;
+  std::vector<int> light_shapes_;  // the shape of each light record (update_values keeps them)
   float motion_bound_ = 1.0f;
   BvhStats bvh_stats_;
   bool dot_weight_ = true;
