@@ -3,8 +3,8 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdlib>
-#include <map>
-#include <tuple>
+#include <charconv>
+#include <string_view>
 #include <vector>
 
 #define TINYOBJLOADER_IMPLEMENTATION
@@ -28,27 +28,42 @@ namespace {
 constexpr int kStepLines = 1024;  // lines (or faces) between two checks of the work left
 
 // tinyobjloader accepts almost anything (unknown statements, "nan", indices past the
-// end, all skipped or clamped silently). This pass reads the text first, strictly, so
-// that an error names its line: known statements only, finite numbers of sane size, and
-// face indices that refer to an element defined before them (OBJ's rule).
-class ObjChecker {
+// end, all skipped or clamped silently), and it reads a file in one call. This reader goes
+// through the text once, strictly, a slice at a time (an error names its line): known
+// statements only, finite numbers of sane size, face indices that refer to an element
+// defined before them (OBJ's rule). It keeps the numbers and faces as it goes; triangles
+// and quads are split here as tinyobjloader splits them (a quad along its shorter
+// diagonal), and a file with a larger polygon is handed to tinyobjloader's ear clipping.
+class ObjReader {
  public:
-  ObjChecker(const std::string& path) : path_(path) {}
+  explicit ObjReader(const std::string& path) : path_(path) {}
+
+  struct Corner {
+    int v, vt, vn;  // 0-based; -1: not given
+  };
+  std::vector<float> v, vt, vn;  // x y z per v and vn; u v per vt
+  std::vector<Corner> corners;   // triangles, three corners each
+  bool polygons = false;         // a face of more than four corners: tinyobjloader triangulates
+  bool has_vt = false, has_vn = false;
 
   // Resumable (a unit: a byte of text); `text` must outlive it.
-  Resumable check(const std::string& text) {
-    size_t i = 0;
+  Resumable read(const std::string& text) {
+    size_t i = 0, last = 0;
     while (i < text.size()) {
       ++line_;
       size_t e = text.find('\n', i);
       if (e == std::string::npos) e = text.size();
-      std::string l = text.substr(i, e - i);
+      std::string_view l(text.data() + i, e - i);
       i = e + 1;
-      if (l.find('\0') != std::string::npos) fail("NUL byte in the text");
+      if (l.find('\0') != std::string_view::npos) fail("NUL byte in the text");
       const size_t hash = l.find('#');
-      if (hash != std::string::npos) l.resize(hash);
-      statement(split(l));
-      if (line_ % kStepLines == 0) co_await Work{long(i - last_)}, last_ = i;
+      if (hash != std::string_view::npos) l = l.substr(0, hash);
+      split(l);
+      statement();
+      if (line_ % kStepLines == 0) {
+        co_await Work{long(i - last)};
+        last = i;
+      }
     }
     if (faces_ == 0) {
       line_ = std::max(line_, 1);
@@ -59,109 +74,137 @@ class ObjChecker {
  private:
   [[noreturn]] void fail(const std::string& what) const { throw InputError(path_, line_, what); }
 
-  static std::vector<std::string> split(const std::string& l) {
-    std::vector<std::string> out;
+  void split(std::string_view l) {
+    t_.clear();
+    constexpr std::string_view kSep = " \t\r\\";
     size_t i = 0;
     for (;;) {
-      i = l.find_first_not_of(" \t\r\\", i);
-      if (i == std::string::npos) return out;
-      const size_t e = l.find_first_of(" \t\r\\", i);
-      out.push_back(l.substr(i, e == std::string::npos ? std::string::npos : e - i));
-      if (e == std::string::npos) return out;
+      i = l.find_first_not_of(kSep, i);
+      if (i == std::string_view::npos) return;
+      const size_t e = l.find_first_of(kSep, i);
+      t_.push_back(l.substr(i, e == std::string_view::npos ? std::string_view::npos : e - i));
+      if (e == std::string_view::npos) return;
       i = e;
     }
   }
 
-  void numbers(const std::vector<std::string>& t, size_t lo, size_t hi) {
-    if (t.size() - 1 < lo || t.size() - 1 > hi)
-      fail("'" + t[0] + "' takes " + std::to_string(lo) + (lo == hi ? "" : " to " + std::to_string(hi)) + " numbers, not " +
-           std::to_string(t.size() - 1));
-    for (size_t k = 1; k < t.size(); ++k) {
-      const char* b = t[k].c_str();
+  std::string token(size_t k) const { return std::string(t_[k]); }
+
+  // Reads numbers 1..n of the statement (n in [lo, hi]) into x[0..n-1].
+  size_t numbers(size_t lo, size_t hi, double* x) {
+    const size_t n = t_.size() - 1;
+    if (n < lo || n > hi)
+      fail("'" + token(0) + "' takes " + std::to_string(lo) + (lo == hi ? "" : " to " + std::to_string(hi)) + " numbers, not " + std::to_string(n));
+    for (size_t k = 1; k <= n; ++k) {
+      const std::string_view t = t_[k];
+      const bool plain = t.find_first_not_of("0123456789+-.eE") == std::string_view::npos;
+      // The character after a token is a separator, '#', a line end or the text's end:
+      // none continues a number, so strtod stops at the token's end.
       char* end = nullptr;
-      const double x = std::strtod(b, &end);
-      const bool plain = t[k].find_first_not_of("0123456789+-.eE") == std::string::npos;
-      if (!plain || end != b + t[k].size() || t[k].empty()) fail("'" + t[k] + "' is not a number");
-      if (!std::isfinite(x) || std::abs(x) > 1e9) fail("'" + t[k] + "' is not finite or is absurdly large (|x| > 1e9)");
+      const double value = plain ? std::strtod(t.data(), &end) : 0.0;
+      if (!plain || end != t.data() + t.size() || t.empty()) fail("'" + token(k) + "' is not a number");
+      if (!std::isfinite(value) || std::abs(value) > 1e9) fail("'" + token(k) + "' is not finite or is absurdly large (|x| > 1e9)");
+      x[k - 1] = value;
     }
+    return n;
   }
 
-  // One "v", "v/t", "v//n" or "v/t/n" corner of a face; returns which of texture
+  // One "v", "v/t", "v//n" or "v/t/n" corner of a face; `given` says which of texture
   // coordinate (1) and normal (2) it gives.
-  int corner(const std::string& c) {
-    long counts[3] = {v_, vt_, vn_};
+  Corner corner(std::string_view c, int& given) {
+    const long counts[3] = {long(v.size() / 3), long(vt.size() / 2), long(vn.size() / 3)};
     const char* names[3] = {"vertex", "texture coordinate", "normal"};
-    int given = 0;
+    int out[3] = {-1, -1, -1};
+    given = 0;
     size_t start = 0;
     for (int k = 0; k < 3; ++k) {
       const size_t slash = c.find('/', start);
-      const std::string part = c.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+      const std::string_view part = c.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
       if (part.empty()) {
-        if (k == 0) fail("face corner '" + c + "' has no vertex index");
+        if (k == 0) fail("face corner '" + std::string(c) + "' has no vertex index");
       } else {
-        char* end = nullptr;
-        const long x = std::strtol(part.c_str(), &end, 10);
-        if (end != part.c_str() + part.size() || part.size() > 10) fail("face corner '" + c + "' is not an index");
+        long x = 0;
+        const auto [end, ec] = std::from_chars(part.data() + (part[0] == '+' ? 1 : 0), part.data() + part.size(), x);
+        if (ec != std::errc() || end != part.data() + part.size() || part.size() > 10) fail("face corner '" + std::string(c) + "' is not an index");
         if (x == 0 || x > counts[k] || x < -counts[k])
-          fail("face corner '" + c + "' refers to " + names[k] + " " + std::to_string(x) + ", but " + std::to_string(counts[k]) +
+          fail("face corner '" + std::string(c) + "' refers to " + names[k] + " " + std::to_string(x) + ", but " + std::to_string(counts[k]) +
                " are defined before it");
+        out[k] = int(x > 0 ? x - 1 : counts[k] + x);
         if (k > 0) given |= k;
       }
-      if (slash == std::string::npos) {
-        return given;
-      }
-      if (k == 2) fail("face corner '" + c + "' has more than three indices");
+      if (slash == std::string_view::npos) break;
+      if (k == 2) fail("face corner '" + std::string(c) + "' has more than three indices");
       start = slash + 1;
     }
-    return given;
+    return {out[0], out[1], out[2]};
   }
 
-  void statement(const std::vector<std::string>& t) {
-    if (t.empty()) return;
-    const std::string& k = t[0];
+  float sq_distance(const Corner& a, const Corner& b) const {
+    float d = 0.0f;
+    for (int k = 0; k < 3; ++k) {
+      const float e = v[size_t(b.v) * 3 + size_t(k)] - v[size_t(a.v) * 3 + size_t(k)];
+      d += e * e;
+    }
+    return d;
+  }
+
+  void statement() {
+    if (t_.empty()) return;
+    const std::string_view k = t_[0];
+    double x[7];
     if (k == "v") {
-      numbers(t, 3, 7);  // x y z, optionally w or an r g b colour
-      ++v_;
+      numbers(3, 7, x);  // x y z, optionally w or an r g b colour
+      v.insert(v.end(), {float(x[0]), float(x[1]), float(x[2])});
     } else if (k == "vt") {
-      numbers(t, 1, 3);
-      ++vt_;
+      const size_t n = numbers(1, 3, x);
+      vt.insert(vt.end(), {float(x[0]), n > 1 ? float(x[1]) : 0.0f});
     } else if (k == "vn") {
-      numbers(t, 3, 3);
+      numbers(3, 3, x);
       // A normal of zero length has no direction to shade with: refused rather than
       // replaced by a guess (the exporter that wrote it lost the surface's orientation).
-      if (std::strtod(t[1].c_str(), nullptr) == 0.0 && std::strtod(t[2].c_str(), nullptr) == 0.0 &&
-          std::strtod(t[3].c_str(), nullptr) == 0.0)
-        fail("'vn' has zero length");
-      ++vn_;
+      if (x[0] == 0.0 && x[1] == 0.0 && x[2] == 0.0) fail("'vn' has zero length");
+      vn.insert(vn.end(), {float(x[0]), float(x[1]), float(x[2])});
     } else if (k == "f") {
-      if (t.size() < 4) fail("a face needs at least 3 corners");
+      if (t_.size() < 4) fail("a face needs at least 3 corners");
       // A face's corners all give texture coordinates and normals, or none do: half a
       // face with shading normals would blend them with zeros.
-      const int first = corner(t[1]);
-      for (size_t c = 2; c < t.size(); ++c)
-        if (corner(t[c]) != first) fail("face corners '" + t[1] + "' and '" + t[c] + "' differ in giving a texture coordinate or normal");
+      face_.clear();
+      int first = 0;
+      for (size_t c = 1; c < t_.size(); ++c) {
+        int given = 0;
+        face_.push_back(corner(t_[c], given));
+        if (c == 1) first = given;
+        else if (given != first) fail("face corners '" + token(1) + "' and '" + token(c) + "' differ in giving a texture coordinate or normal");
+      }
+      has_vt |= (first & 1) != 0;
+      has_vn |= (first & 2) != 0;
+      if (face_.size() == 3) {
+        corners.insert(corners.end(), face_.begin(), face_.end());
+      } else if (face_.size() == 4) {  // tinyobjloader's split: along the shorter diagonal
+        const Corner& a = face_[0], &b = face_[1], &c = face_[2], &d = face_[3];
+        if (sq_distance(a, c) < sq_distance(b, d)) corners.insert(corners.end(), {a, b, c, a, c, d});
+        else corners.insert(corners.end(), {a, b, d, b, c, d});
+      } else {
+        polygons = true;
+      }
       ++faces_;
     } else if (k == "o" || k == "g" || k == "s" || k == "usemtl" || k == "mtllib") {
       // names, smoothing groups and materials do not change the geometry we use
     } else {
-      fail("unknown or unsupported statement '" + k.substr(0, 20) + "'");
+      fail("unknown or unsupported statement '" + std::string(k.substr(0, 20)) + "'");
     }
   }
 
   const std::string& path_;
-  size_t last_ = 0;  // the offset of the last check of the work left
   int line_ = 0;
-  long v_ = 0, vt_ = 0, vn_ = 0, faces_ = 0;
+  long faces_ = 0;
+  std::vector<std::string_view> t_;  // the tokens of the current line
+  std::vector<Corner> face_;
 };
 
-}  // namespace
-
-Resumable parse_mesh_obj_steps(std::string text, std::string path, MeshData& m) {
-  m = MeshData();
-  ObjChecker checker(path);
-  Resumable check = checker.check(text);
-  while (!co_await check) {
-  }
+// Triangles by tinyobjloader (its ear clipping for polygons of more than four corners),
+// as corners; the reader has checked the text.
+std::vector<ObjReader::Corner> tinyobj_corners(const std::string& text, const std::string& path) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
@@ -172,62 +215,52 @@ Resumable parse_mesh_obj_steps(std::string text, std::string path, MeshData& m) 
     while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
     throw InputError(path, 0, why.empty() ? "cannot read the OBJ file" : why);
   }
-  const tinyobj::attrib_t& a = reader.GetAttrib();
-  std::vector<glm::vec3> positions;
-  for (size_t i = 0; i + 2 < a.vertices.size(); i += 3) {
-    const glm::vec3 p(a.vertices[i], a.vertices[i + 1], a.vertices[i + 2]);
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw InputError(path, 0, "vertex " + std::to_string(i / 3 + 1) + " is not finite");
-    positions.push_back(p);
-  }
-  bool has_normals = false, has_uvs = false;
-  for (const tinyobj::shape_t& shape : reader.GetShapes())
-    for (const tinyobj::index_t& c : shape.mesh.indices) {
-      has_normals |= c.normal_index >= 0;
-      has_uvs |= c.texcoord_index >= 0;
-    }
-  // OBJ indexes positions, texture coordinates and normals separately; MeshData has one
-  // index per vertex, so each distinct (v, vt, vn) triple becomes one vertex. Corners of
-  // faces without vt or vn (where other faces have them) get uv 0 and a zero normal,
-  // which the packer leaves out: those triangles shade with their geometric normal.
-  std::map<std::tuple<int, int, int>, unsigned> vertex_of;
-  auto vertex = [&](const tinyobj::index_t& c, size_t face) -> unsigned {
-    if (c.vertex_index < 0 || size_t(c.vertex_index) >= positions.size())
-      throw InputError(path, 0, "face " + std::to_string(face + 1) + " refers to a missing vertex");
-    const auto key = std::make_tuple(c.vertex_index, c.texcoord_index, c.normal_index);
-    const auto found = vertex_of.find(key);
-    if (found != vertex_of.end()) return found->second;
-    const unsigned k = unsigned(m.positions.size());
-    vertex_of.emplace(key, k);
-    m.positions.push_back(positions[size_t(c.vertex_index)]);
-    if (has_normals) {
-      glm::vec3 n(0.0f);
-      if (c.normal_index >= 0) {
-        if (3 * size_t(c.normal_index) + 2 >= a.normals.size())
-          throw InputError(path, 0, "face " + std::to_string(face + 1) + " refers to a missing normal");
-        n = glm::vec3(a.normals[3 * size_t(c.normal_index)], a.normals[3 * size_t(c.normal_index) + 1], a.normals[3 * size_t(c.normal_index) + 2]);
-      }
-      m.normals.push_back(n);
-    }
-    if (has_uvs) {
-      glm::vec2 t(0.0f);
-      if (c.texcoord_index >= 0) {
-        if (2 * size_t(c.texcoord_index) + 1 >= a.texcoords.size())
-          throw InputError(path, 0, "face " + std::to_string(face + 1) + " refers to a missing texture coordinate");
-        t = glm::vec2(a.texcoords[2 * size_t(c.texcoord_index)], a.texcoords[2 * size_t(c.texcoord_index) + 1]);
-      }
-      m.uvs.push_back(t);
-    }
-    return k;
-  };
+  std::vector<ObjReader::Corner> out;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     const auto& idx = shape.mesh.indices;
-    for (size_t f = 0; f + 2 < idx.size(); f += 3) {
-      glm::uvec3 tri;
-      for (int k = 0; k < 3; ++k) tri[k] = vertex(idx[f + size_t(k)], f / 3);  // in order: vertices number as first used
-      m.triangles.push_back(tri);
-      if (m.triangles.size() % kStepLines == 0) co_await Work{16 * kStepLines};  // about the bytes of text of as many faces
-    }
+    for (size_t f = 0; f + 2 < idx.size(); f += 3)
+      for (size_t k = 0; k < 3; ++k) out.push_back({idx[f + k].vertex_index, idx[f + k].texcoord_index, idx[f + k].normal_index});
+  }
+  return out;
+}
+
+}  // namespace
+
+Resumable parse_mesh_obj_steps(std::string text, std::string path, MeshData& m) {
+  m = MeshData();
+  ObjReader r(path);
+  Resumable read = r.read(text);
+  while (!co_await read) {
+  }
+  if (r.polygons) r.corners = tinyobj_corners(text, path);  // one step: rare, and not sliced
+  // OBJ indexes positions, texture coordinates and normals separately; MeshData has one
+  // index per vertex, so each distinct (v, vt, vn) triple becomes one vertex, numbered as
+  // first used. Corners of faces without vt or vn (where other faces have them) get uv 0
+  // and a zero normal, which the packer leaves out: those triangles shade with their
+  // geometric normal. The triples seen per position are chained in flat arrays.
+  std::vector<int> head(r.v.size() / 3, -1);
+  struct Seen {
+    int vt, vn, next;
+  };
+  std::vector<Seen> seen;
+  seen.reserve(r.corners.size() / 4);
+  auto vertex = [&](const ObjReader::Corner& c) -> unsigned {
+    for (int s = head[size_t(c.v)]; s >= 0; s = seen[size_t(s)].next)
+      if (seen[size_t(s)].vt == c.vt && seen[size_t(s)].vn == c.vn) return unsigned(s);
+    const int k = int(seen.size());
+    seen.push_back({c.vt, c.vn, head[size_t(c.v)]});
+    head[size_t(c.v)] = k;
+    m.positions.emplace_back(r.v[3 * size_t(c.v)], r.v[3 * size_t(c.v) + 1], r.v[3 * size_t(c.v) + 2]);
+    if (r.has_vn) m.normals.push_back(c.vn >= 0 ? glm::vec3(r.vn[3 * size_t(c.vn)], r.vn[3 * size_t(c.vn) + 1], r.vn[3 * size_t(c.vn) + 2]) : glm::vec3(0.0f));
+    if (r.has_vt) m.uvs.push_back(c.vt >= 0 ? glm::vec2(r.vt[2 * size_t(c.vt)], r.vt[2 * size_t(c.vt) + 1]) : glm::vec2(0.0f));
+    return unsigned(k);
+  };
+  m.triangles.reserve(r.corners.size() / 3);
+  for (size_t f = 0; f + 2 < r.corners.size(); f += 3) {
+    glm::uvec3 tri;
+    for (int k = 0; k < 3; ++k) tri[k] = vertex(r.corners[f + size_t(k)]);  // in order: vertices number as first used
+    m.triangles.push_back(tri);
+    if (m.triangles.size() % kStepLines == 0) co_await Work{16 * kStepLines};  // about the bytes of text of as many faces
   }
   if (m.triangles.empty()) throw InputError(path, 0, "no faces");
 }
