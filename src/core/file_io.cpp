@@ -11,8 +11,16 @@
 namespace pt {
 
 std::optional<std::string> read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return std::nullopt;
+  // One read of the size the file has (a stream that cannot tell its size is copied).
+  const std::streamoff size = in.tellg();
+  if (size >= 0 && in.seekg(0)) {
+    std::string bytes(size_t(size), '\0');
+    if (in.read(bytes.data(), size) && in.peek() == std::char_traits<char>::eof()) return bytes;
+    in.clear();
+    in.seekg(0);
+  }
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
