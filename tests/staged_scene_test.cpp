@@ -111,3 +111,62 @@ TEST_CASE("an edit of values updates the records in place and renders as the edi
   CHECK_FALSE(r.update_values(dark));
   CHECK(render(r, 2) == edited);  // refused: nothing changed
 }
+
+// Moving objects in a scene with a mesh (the page's position and radius edits): the
+// BVH is refitted over the same tree and only the changed rows are uploaded; every node
+// still bounds what is under it, and the image is the edited scene's as a new build
+// renders it (the same nearest hits, another tree).
+TEST_CASE("a moved sphere refits the BVH in place and renders as the moved scene built anew", "[gpu][staging]") {
+  test_gl();
+  Scene scene = load_scene_text(kScene, "staged.xml", false);
+  PackedScene p = pack_scene(scene);
+  Renderer r;
+  r.set_scene(scene, p);
+  const std::vector<float> before = render(r, 2);
+  int sphere = -1;
+  for (size_t i = 0; i < scene.shapes.size(); ++i)
+    if (scene.shapes[i].kind == ShapeKind::Sphere && scene.shapes[i].light < 0) sphere = int(i);
+  REQUIRE(sphere >= 0);
+  // Far across the mesh, larger; then the light moved too.
+  std::vector<int> prims, nodes;
+  scene.shapes[size_t(sphere)].a = glm::vec3(-1.2f, 0.3f, 0.5f);
+  scene.shapes[size_t(sphere)].radius = 0.6f;
+  REQUIRE(refit_shape(scene, p, sphere, prims, nodes));
+  scene.lights[0].position = glm::vec3(-1.0f, 2.5f, 1.0f);
+  sync_light(scene, 0);
+  REQUIRE(refit_shape(scene, p, scene.lights[0].shape, prims, nodes));
+  CHECK(nodes.size() >= 2);
+  CHECK(nodes.size() < size_t(p.nodes.count()) / 10);  // a path to the root, not the tree
+  // Every node bounds its children or its primitives.
+  auto inside = [](glm::vec3 lo, glm::vec3 hi, glm::vec3 plo, glm::vec3 phi) {
+    return glm::all(glm::lessThanEqual(lo, plo)) && glm::all(glm::greaterThanEqual(hi, phi));
+  };
+  for (int n = 0; n < p.nodes.count(); ++n) {
+    const glm::vec3 lo = p.nodes.get3(n, node_rec::lo), hi = p.nodes.get3(n, node_rec::hi);
+    const int first = int(p.nodes.get(n, node_rec::first)), count = int(p.nodes.get(n, node_rec::count));
+    if (count == 0) {
+      for (int c : {first, first + 1}) REQUIRE(inside(lo, hi, p.nodes.get3(c, node_rec::lo), p.nodes.get3(c, node_rec::hi)));
+    } else {
+      for (int q = first; q < first + count; ++q) {
+        const int tag = int(p.prims.get(q, prim_rec::tag));
+        if (tag >= 0) {
+          for (const Field* f : {&prim_rec::v0, &prim_rec::v1, &prim_rec::v2}) REQUIRE(inside(lo, hi, p.prims.get3(q, *f), p.prims.get3(q, *f)));
+        } else {
+          const Shape& s = scene.shapes[size_t(-1 - tag)];
+          REQUIRE(inside(lo, hi, s.a - glm::vec3(s.radius), s.a + glm::vec3(s.radius)));
+        }
+      }
+    }
+  }
+  REQUIRE(r.update_geometry(scene, p, prims, nodes));
+  const std::vector<float> moved = render(r, 2);
+  CHECK(moved != before);
+  Renderer fresh;
+  fresh.set_scene(scene);
+  CHECK(render(fresh, 2) == moved);
+  // A mesh instance is not refitted: the caller packs again.
+  int mesh = -1;
+  for (size_t i = 0; i < scene.shapes.size(); ++i)
+    if (scene.shapes[i].kind == ShapeKind::Mesh) mesh = int(i);
+  CHECK_FALSE(refit_shape(scene, p, mesh, prims, nodes));
+}

@@ -133,6 +133,7 @@ bool App::load_scene(const std::string& path, bool keep_camera) {
     l.keep_camera = keep_camera && loads_ > 0;
     l.since = std::chrono::steady_clock::now();
     loading_ = std::move(l);  // a newer request replaces one in progress
+    packed_.reset();
     return true;
   } catch (const std::exception& e) {
     error_ = e.what();
@@ -259,7 +260,7 @@ void App::draw_scene_controls() {
     changed |= ImGui::SliderFloat("shutter", &cam.shutter, 0.0f, 1.0f);
     if (changed) renderer_->set_camera(cam);
   }
-  if (edited) scene_edited(moved);
+  if (edited) scene_edited(moved ? scene_.lights[0].shape : -1);
 }
 
 void App::draw_panel() {

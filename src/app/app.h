@@ -97,7 +97,7 @@ class App {
   void start_loading(Scene scene, bool keep_camera);
   void apply_scene(Scene scene, const PackedScene& packed, StagedScene* staged, const std::optional<Camera>& camera);
   void poll_loading();
-  void scene_edited(bool geometry);  // after a panel changed scene_
+  void scene_edited(int moved_shape);  // after a panel changed scene_ (-1: no shape moved)
   void draw_loading();
   void handle_click();
   void draw_selection_panel(int fb_w);
@@ -168,6 +168,7 @@ class App {
   double load_progress() const;  // 0..1
   bool shown_ = false;  // the renderer has a scene (not yet after a lost context)
   std::optional<Loading> loading_;
+  std::optional<PackedScene> packed_;  // the shown scene's packing (refit_shape), while nothing else is prepared
   int loads_ = 0, context_restores_ = 0;
   // The last preparation, for the stats: wall time from the request to the swap, the
   // packing's slices and their time, and the longest slice.

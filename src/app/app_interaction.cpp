@@ -36,6 +36,7 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 void App::start_loading(Scene scene, bool keep_camera) {
+  packed_.reset();  // the shown scene's packing is not edited while another is prepared
   Loading l;
   l.path = scene.path;
   l.scene = std::make_unique<Scene>(std::move(scene));
@@ -125,6 +126,7 @@ void App::poll_loading() {
     } else {
       apply_scene(std::move(*l.scene), *l.packed, l.staged.get(), camera);  // throws before changing anything if the program does not build
     }
+    packed_ = std::move(l.packed);  // kept for refitting the shown scene's BVH after an edit
     last_load_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - l.since).count();
     last_pack_work_ms_ = l.work_ms;
     last_slices_ = l.slices;
@@ -265,16 +267,24 @@ void App::draw_selection_panel(int fb_w) {
   ImGui::PopItemWidth();
   ImGui::End();
   if (!open) selected_ = -1;
-  if (edited) scene_edited(moved);
+  if (edited) scene_edited(moved ? selected_ : -1);
 }
 
-// Values (materials, emission, the environment) go to the renderer at once; a change of
-// geometry re-packs the scene in slices like a load, the view kept and the current image
-// rendering meanwhile (a small scene is packed within the frame; a large one's BVH is
-// rebuilt over several). Either way the program is the cached one: the kinds are the same.
-void App::scene_edited(bool geometry) {
+// Values (materials, emission, the environment) go to the renderer at once, and so does a
+// moved or resized analytic shape (the BVH refitted); a mesh instance moved re-packs the
+// scene in slices like a load, the view kept and the current image rendering meanwhile.
+// Either way the program is the cached one: the kinds are the same.
+void App::scene_edited(int moved) {
   if (loading_ && !loading_->edit) return;  // another scene on its way replaces this one
-  if (!geometry && !loading_ && renderer_->update_values(scene_)) return;
+  if (!loading_) {
+    if (moved < 0 && renderer_->update_values(scene_)) return;
+    // An analytic shape moved: the BVH refitted over the same tree, a path to its root.
+    std::vector<int> prims, nodes;
+    if (moved >= 0 && packed_ && refit_shape(scene_, *packed_, moved, prims, nodes) &&
+        renderer_->update_geometry(scene_, *packed_, prims, nodes))
+      return;
+  }
+  packed_.reset();  // refitted, maybe, but not shown: the new packing replaces it
   start_loading(scene_, true);  // replaces an edit in progress: scene_ has both
   loading_->edit = true;
 }

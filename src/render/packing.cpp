@@ -57,13 +57,38 @@ void pack_shapes(const Scene& scene, PackedScene& p) {
 }
 
 // An analytic shape's primitive: what intersect_<kind> reads of its shape record.
-void pack_analytic_prim(PackedScene& p, const Shape& s, int shape) {
-  const int k = p.prims.add();
+void write_analytic_prim(PackedScene& p, int k, const Shape& s, int shape) {
   p.prims.set(k, prim_rec::tag, -1 - shape);
   p.prims.set(k, prim_rec::kind, int(s.kind));
   p.prims.set(k, prim_rec::v0, s.a);
   p.prims.set(k, prim_rec::v1, s.kind == ShapeKind::Sphere ? s.velocity : s.b);
   p.prims.set(k, prim_rec::radius, s.radius);
+}
+
+void pack_analytic_prim(PackedScene& p, const Shape& s, int shape) { write_analytic_prim(p, p.prims.add(), s, shape); }
+
+// The box the BVH holds for an analytic shape (a sphere's over the motion's times).
+Aabb analytic_box(const Shape& s, float motion_bound) {
+  Aabb b;
+  if (s.kind == ShapeKind::Sphere) {
+    for (const glm::vec3 c : {s.a, s.a + s.velocity * motion_bound}) {
+      b.grow(c - glm::vec3(s.radius));
+      b.grow(c + glm::vec3(s.radius));
+    }
+  } else {
+    b.grow(s.a);
+    b.grow(s.b);
+  }
+  return b.padded();
+}
+
+void write_triangle_prim(PackedScene& p, int k, int tag, const glm::vec3 v[3], glm::vec3 attr) {
+  p.prims.set(k, prim_rec::tag, tag);
+  p.prims.set(k, prim_rec::kind, triangle_edge_order(v[0], v[1], v[2]));
+  p.prims.set(k, prim_rec::v0, v[0]);
+  p.prims.set(k, prim_rec::v1, v[1]);
+  p.prims.set(k, prim_rec::v2, v[2]);
+  p.prims.set(k, prim_rec::attr, attr);
 }
 
 bool degenerate(const glm::vec3 v[3]) { return !(glm::length(glm::cross(v[1] - v[0], v[2] - v[0])) > 0.0f); }
@@ -178,18 +203,8 @@ void PackJob::boxes_step(long& work) {
           break;
         }
         case BvhRole::Analytic: {
-          Aabb b;
-          if (s.kind == ShapeKind::Sphere) {
-            for (const glm::vec3 c : {s.a, s.a + s.velocity * p_.motion_bound}) {
-              b.grow(c - glm::vec3(s.radius));
-              b.grow(c + glm::vec3(s.radius));
-            }
-          } else {
-            b.grow(s.a);
-            b.grow(s.b);
-          }
           refs_.push_back({i, -1});
-          boxes_.push_back(b.padded());
+          boxes_.push_back(analytic_box(s, p_.motion_bound));
           break;
         }
         case BvhRole::Triangles: {  // a lone Triangle
@@ -278,12 +293,7 @@ void PackJob::prims_step(long& work) {
       v[2] = w[tri.z];
       if (vertex_base_[size_t(ref.shape)] >= 0) attr = glm::vec3(tri) + float(vertex_base_[size_t(ref.shape)]);
     }
-    p_.prims.set(k, prim_rec::tag, ref.shape);
-    p_.prims.set(k, prim_rec::kind, triangle_edge_order(v[0], v[1], v[2]));
-    p_.prims.set(k, prim_rec::v0, v[0]);
-    p_.prims.set(k, prim_rec::v1, v[1]);
-    p_.prims.set(k, prim_rec::v2, v[2]);
-    p_.prims.set(k, prim_rec::attr, attr);
+    write_triangle_prim(p_, k, ref.shape, v, attr);
   }
 }
 
@@ -301,6 +311,67 @@ void PackJob::nodes_step(long& work) {
 PackedScene PackJob::take() {
   world_.clear();
   return std::move(p_);
+}
+
+bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>& prims, std::vector<int>& nodes) {
+  const Shape& s = scene.shapes[size_t(shape)];
+  const BvhRole role = info(s.kind).bvh;
+  if (s.kind == ShapeKind::Mesh || role == BvhRole::None) return false;
+  // Its primitive: analytic shapes are tagged -1 - shape, a lone triangle `shape`.
+  const int tag = role == BvhRole::Triangles ? shape : -1 - shape;
+  int k = -1;
+  for (int i = 0; i < p.prims.count() && k < 0; ++i)
+    if (int(p.prims.get(i, prim_rec::tag)) == tag) k = i;
+  const glm::vec3 v[3] = {s.a, s.b, s.c};
+  if (role == BvhRole::Triangles && (k < 0) != degenerate(v)) return false;  // it enters or leaves the BVH
+  if (k < 0) return true;  // a degenerate triangle that stays one: nothing to draw
+  if (p.node_parent.empty() && p.nodes.count() > 0) {
+    p.node_parent.assign(size_t(p.nodes.count()), -1);
+    p.prim_leaf.assign(size_t(p.prims.count()), -1);
+    for (int n = 0; n < p.nodes.count(); ++n) {
+      const int first = int(p.nodes.get(n, node_rec::first)), count = int(p.nodes.get(n, node_rec::count));
+      if (count > 0)
+        for (int q = first; q < first + count; ++q) p.prim_leaf[size_t(q)] = n;
+      else
+        p.node_parent[size_t(first)] = p.node_parent[size_t(first) + 1] = n;
+    }
+  }
+  if (role == BvhRole::Triangles) write_triangle_prim(p, k, shape, v, glm::vec3(-1.0f));
+  else write_analytic_prim(p, k, s, shape);
+  prims.push_back(k);
+  if (role == BvhRole::Unbounded) return true;  // planes are outside the BVH
+  // The leaf's box from its primitives, then each ancestor's from its two children.
+  auto prim_box = [&](int q) {
+    if (int(p.prims.get(q, prim_rec::tag)) >= 0) {
+      Aabb b;
+      for (const Field* f : {&prim_rec::v0, &prim_rec::v1, &prim_rec::v2}) b.grow(p.prims.get3(q, *f));
+      return b.padded();
+    }
+    return analytic_box(scene.shapes[size_t(-1 - int(p.prims.get(q, prim_rec::tag)))], p.motion_bound);
+  };
+  for (int n = p.prim_leaf[size_t(k)]; n >= 0; n = p.node_parent[size_t(n)]) {
+    const int first = int(p.nodes.get(n, node_rec::first)), count = int(p.nodes.get(n, node_rec::count));
+    Aabb b;
+    if (count > 0) {
+      for (int q = first; q < first + count; ++q) {
+        const Aabb c = prim_box(q);
+        b.grow(c.lo);
+        b.grow(c.hi);
+      }
+    } else {
+      for (int c : {first, first + 1}) {
+        b.grow(p.nodes.get3(c, node_rec::lo));
+        b.grow(p.nodes.get3(c, node_rec::hi));
+      }
+    }
+    p.nodes.set(n, node_rec::lo, b.lo);
+    p.nodes.set(n, node_rec::hi, b.hi);
+    nodes.push_back(n);
+  }
+  p.shapes = RecordBuffer(shape_rec::kTexels);  // the shape's own record (and the lights naming it)
+  p.lights = RecordBuffer(light_rec::kTexels);
+  pack_shapes(scene, p);
+  return true;
 }
 
 PackedScene pack_values(const Scene& scene) {

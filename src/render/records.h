@@ -122,7 +122,13 @@ class RecordBuffer {
   void set(int rec, const Field& f, glm::vec3 v);
   void set(int rec, const Field& f, glm::vec2 v);
   void set(int rec, const Field& f, int v) { set(rec, f, float(v)); }
+  float get(int rec, const Field& f) const { return data_[(size_t(rec) * size_t(texels_) + size_t(f.texel)) * 4 + size_t(f.comp)]; }
+  glm::vec3 get3(int rec, const Field& f) const {
+    const float* p = &data_[(size_t(rec) * size_t(texels_) + size_t(f.texel)) * 4 + size_t(f.comp)];
+    return glm::vec3(p[0], p[1], p[2]);
+  }
   int count() const { return count_; }
+  int texels_per_record() const { return texels_; }
   int rows() const;  // at least 1
   // Padded to rows() * kDataWidth texels of 4 floats.
   std::vector<float> texels() const;

@@ -26,6 +26,22 @@ int light_shape(const RecordBuffer& lights, int i) {
   return int(lights.raw()[(size_t(i) * size_t(light_rec::kTexels) + size_t(f.texel)) * 4 + size_t(f.comp)]);
 }
 
+// The rows of a record texture that hold the given records, from the buffer again.
+void upload_rows(Texture& t, const RecordBuffer& b, std::vector<int> recs) {
+  std::vector<int> rows;
+  for (int r : recs) rows.push_back(r * b.texels_per_record() / kDataWidth);
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  std::vector<float> row(size_t(kDataWidth) * 4);
+  for (int r : rows) {
+    const size_t begin = size_t(r) * kDataWidth * 4, end = std::min(b.raw().size(), begin + row.size());
+    std::fill(std::copy(b.raw().begin() + std::ptrdiff_t(begin), b.raw().begin() + std::ptrdiff_t(end), row.begin()), row.end(), 0.0f);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, r, kDataWidth, 1, GL_RGBA, GL_FLOAT, row.data());
+  }
+  PT_GL_CHECK("glTexSubImage2D");
+}
+
 Texture upload(const RecordBuffer& b) {
   const std::vector<float> t = b.texels();
   return Texture(kDataWidth, b.rows(), GL_RGBA32F, t.data());
@@ -151,6 +167,7 @@ void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* 
   }
   num_lights_ = p.lights.count();
   num_shapes_ = p.shapes.count();
+  num_prims_ = p.prims.count();
   light_shapes_.clear();
   for (int i = 0; i < num_lights_; ++i) light_shapes_.push_back(light_shape(p.lights, i));
   num_unbounded_ = p.unbounded;
@@ -184,7 +201,16 @@ void Renderer::set_environment(const Environment& env) {
   update_sh();
 }
 
-bool Renderer::update_values(const Scene& scene) {
+bool Renderer::update_values(const Scene& scene) { return update_records(scene); }
+
+bool Renderer::update_geometry(const Scene& scene, const PackedScene& p, const std::vector<int>& prims, const std::vector<int>& nodes) {
+  if (p.prims.count() != num_prims_ || p.nodes.count() != num_nodes_ || !update_records(scene)) return false;
+  upload_rows(prim_tex_, p.prims, prims);
+  upload_rows(node_tex_, p.nodes, nodes);
+  return true;
+}
+
+bool Renderer::update_records(const Scene& scene) {
   const Features f = Features::of(scene);  // the program must stay the same
   if (!have_scene_ || f.shapes != features_.shapes || f.materials != features_.materials || f.lights != features_.lights ||
       f.env_map != features_.env_map || f.motion != features_.motion || scene.environment.map != env_.map)

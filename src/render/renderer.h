@@ -54,6 +54,10 @@ class Renderer {
   // the estimate restarts. false, changing nothing, when the edit needs set_scene: other
   // kinds, or another set of shapes being lights (an emission turned on or off).
   bool update_values(const Scene& scene);
+  // The same for an edit that also moved or resized shapes, refitted into `packed` (the
+  // scene's packed data, as set) by refit_shape (render/packing.h): the rows of the
+  // primitive and node records it changed are uploaded too.
+  bool update_geometry(const Scene& scene, const PackedScene& packed, const std::vector<int>& prims, const std::vector<int>& nodes);
   // Starts building the program for the scene's kinds without waiting for the driver;
   // true when set_scene(scene) will not block on it (always, without
   // KHR_parallel_shader_compile). A page polls this once a frame and keeps drawing.
@@ -131,6 +135,7 @@ class Renderer {
   void select_program();  // the cached (or newly built) program for features_ + settings_.mode
   void update_sh();       // the environment's SH coefficients, when the mode needs them
   void set_environment(const Environment& env);  // its textures (a new map only) and uniforms
+  bool update_records(const Scene& scene);       // update_values
   Features features_;
   bool have_scene_ = false;
   Environment env_;       // as last set (for the SH projection)
@@ -160,7 +165,7 @@ class Renderer {
   int sweep_spp_ = 1;     // samples per pixel of the sweep in progress
   bool needs_clear_ = true;
   int width_ = 0, height_ = 0;
-  int num_lights_ = 0, num_unbounded_ = 0, num_nodes_ = 0, num_shapes_ = 0;
+  int num_lights_ = 0, num_unbounded_ = 0, num_nodes_ = 0, num_shapes_ = 0, num_prims_ = 0;
   std::vector<int> light_shapes_;  // the shape of each light record (update_values keeps them)
   float motion_bound_ = 1.0f;
   BvhStats bvh_stats_;
