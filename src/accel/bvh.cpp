@@ -11,8 +11,10 @@ BvhBuilder::BvhBuilder(const std::vector<Aabb>& boxes, const BvhBuildOptions& o)
   o_.bins = std::clamp(o_.bins, 2, kMaxBins);
   o_.max_leaf = std::clamp(o_.max_leaf, 1, 16);
   o_.single_leaf_max = std::clamp(o_.single_leaf_max, 1, 16);
-  centers_.resize(n);
-  out_.order.resize(n);
+  // Filled by the sliced set-up: writing them here, in one step, touched 20 MB of fresh
+  // pages for a million boxes (100 ms where page faults are slow).
+  centers_.reserve(n);
+  out_.order.reserve(n);
   if (boxes_.empty()) {
     phase_ = Phase::Done;
     return;
@@ -20,7 +22,7 @@ BvhBuilder::BvhBuilder(const std::vector<Aabb>& boxes, const BvhBuildOptions& o)
   if (int(n) <= o_.single_leaf_max) {
     out_.nodes.emplace_back();
     for (size_t i = 0; i < n; ++i) {
-      out_.order[i] = int(i);
+      out_.order.push_back(int(i));
       out_.nodes[0].box.grow(boxes_[i]);
     }
     out_.nodes[0].first = 0;
@@ -48,12 +50,12 @@ bool BvhBuilder::run(long work) {
       case Phase::Setup: {
         const int start = i_, stop = stop_at(int(boxes_.size()));
         for (; i_ < stop; ++i_) {
-          centers_[size_t(i_)] = boxes_[size_t(i_)].center();
-          out_.order[size_t(i_)] = i_;
+          centers_.push_back(boxes_[size_t(i_)].center());
+          out_.order.push_back(i_);
         }
         work -= stop - start;
         if (i_ < int(boxes_.size())) break;
-        out_.nodes.reserve(2 * boxes_.size() / size_t(std::min(o_.max_leaf, 2)) + 1);
+        out_.nodes.reserve(2 * boxes_.size() - 1);  // every binary tree over n leaves-or-fewer: no reallocation (it copied 40 MB in one slice)
         out_.nodes.emplace_back();
         stack_.push_back({0, 0, int(boxes_.size()), 1});
         phase_ = Phase::Next;
