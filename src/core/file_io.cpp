@@ -1,5 +1,6 @@
 #include "core/file_io.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -24,6 +25,34 @@ std::optional<std::string> read_file(const std::string& path) {
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+Resumable read_file_steps(std::string path, std::optional<std::string>& out) {
+  out.reset();
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) co_return;
+  const std::streamoff size = in.tellg();
+  if (size < 0 || !in.seekg(0)) {  // cannot tell its size: one step
+    out = read_file(path);
+    co_return;
+  }
+  constexpr size_t kChunk = size_t(1) << 18;
+  std::string bytes;
+  bytes.reserve(size_t(size));
+  while (bytes.size() < size_t(size)) {
+    const size_t at = bytes.size(), n = std::min(kChunk, size_t(size) - at);
+    bytes.resize(at + n);
+    if (!in.read(bytes.data() + at, std::streamsize(n))) {  // it shrank meanwhile: read it again whole
+      out = read_file(path);
+      co_return;
+    }
+    co_await Work{4096};
+  }
+  if (in.peek() != std::char_traits<char>::eof()) {  // it grew meanwhile
+    out = read_file(path);
+    co_return;
+  }
+  out = std::move(bytes);
 }
 
 // Nothing is lost: the new bytes go to a fresh temporary file in the same folder (so the

@@ -125,7 +125,8 @@ class Reader {
     const int comps = tinygltf::GetNumComponentsInType(uint32_t(a.type));
     if (comps != want_components) fail(at, "expected " + std::to_string(want_components) + " components (used by " + user + ")");
     const unsigned char* base = checked(a, at);
-    out.assign(a.count * size_t(comps), 0.0f);
+    out.clear();  // filled in the loop: touching a large array in one step is slow
+    out.reserve(a.count * size_t(comps));
     const size_t stride = stride_of(a);
     for (size_t i = 0; i < a.count; ++i) {
       const unsigned char* p = base + i * stride;
@@ -143,7 +144,7 @@ class Reader {
           default: fail(at, "unsupported component type " + std::to_string(a.componentType) + " (used by " + user + ")");
         }
         if (!std::isfinite(v)) fail(at, "element " + std::to_string(i) + " is not finite");
-        out[i * size_t(comps) + size_t(c)] = v;
+        out.push_back(v);
       }
       if (i % kStep == kStep - 1) co_await Work{kStep};
     }
@@ -154,19 +155,25 @@ class Reader {
     const std::string at = pointer("accessors", size_t(index));
     if (a.type != TINYGLTF_TYPE_SCALAR) fail(at, "indices must be scalars");
     const unsigned char* base = checked(a, at);
-    out.assign(a.count, 0u);
+    out.clear();
+    out.reserve(a.count);
     const size_t stride = stride_of(a);
     for (size_t i = 0; i < a.count; ++i) {
       const unsigned char* p = base + i * stride;
       switch (a.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = p[0]; break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out.push_back(p[0]); break;
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
           uint16_t s;
           std::memcpy(&s, p, 2);
-          out[i] = s;
+          out.push_back(s);
           break;
         }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: std::memcpy(&out[i], p, 4); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+          uint32_t u;
+          std::memcpy(&u, p, 4);
+          out.push_back(u);
+          break;
+        }
         default: fail(at, "unsupported index component type " + std::to_string(a.componentType));
       }
       if (i % kStep == kStep - 1) co_await Work{kStep};
@@ -379,6 +386,7 @@ Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver res
     Resumable read = r.floats(pos->second, 3, at + "/attributes/POSITION", v);
     while (!co_await read) {
     }
+    d->positions.reserve(v.size() / 3);
     for (size_t i = 0; i + 2 < v.size(); i += 3) d->positions.emplace_back(v[i], v[i + 1], v[i + 2]);
     co_await Work{long(v.size() / 3)};
     if (auto n = p.attributes.find("NORMAL"); n != p.attributes.end()) {
@@ -386,6 +394,7 @@ Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver res
       while (!co_await read) {
       }
       if (f.size() != v.size()) r.fail(at, "NORMAL and POSITION counts differ");
+      d->normals.reserve(f.size() / 3);
       for (size_t i = 0; i + 2 < f.size(); i += 3) d->normals.emplace_back(f[i], f[i + 1], f[i + 2]);
       co_await Work{long(f.size() / 3)};
     }
@@ -395,6 +404,7 @@ Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver res
       }
       if (f.size() / 2 != d->positions.size()) r.fail(at, "TEXCOORD_0 and POSITION counts differ");
       // glTF's v runs down from the image's top row, ours up from its bottom row.
+      d->uvs.reserve(f.size() / 2);
       for (size_t i = 0; i + 1 < f.size(); i += 2) d->uvs.emplace_back(f[i], 1.0f - f[i + 1]);
       co_await Work{long(f.size() / 2)};
     }
@@ -408,6 +418,7 @@ Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver res
       for (size_t i = 0; i < idx.size(); ++i) idx[i] = uint32_t(i);
     }
     if (idx.size() % 3 != 0) r.fail(at, std::to_string(idx.size()) + " indices are not whole triangles");
+    d->triangles.reserve(idx.size() / 3);
     for (size_t i = 0; i + 2 < idx.size(); i += 3) {
       for (int k = 0; k < 3; ++k)
         if (idx[i + size_t(k)] >= d->positions.size())

@@ -225,7 +225,10 @@ Resumable load_mesh_steps(MeshSource m, MeshEntry& e) {
       }
       e.parts.push_back({std::move(d), glm::mat4(1.0f), {}});
     } else {
-      std::optional<std::string> bytes = read_file(m.src);
+      std::optional<std::string> bytes;
+      Resumable read = read_file_steps(m.src, bytes);
+      while (!co_await read) {
+      }
       if (!bytes) throw InputError(m.src, 0, "cannot open the mesh file");
       if (has_extension(m.src, ".gltf") || has_extension(m.src, ".glb")) {
         // The glTF's own buffer and image files are dependencies too (watch reloads on their change).
