@@ -27,3 +27,13 @@ file(READ "${OUT}/room.svg" svg LIMIT 4)
 if(NOT rc EQUAL 0 OR NOT "${svg}" MATCHES "^<svg")
   message(FATAL_ERROR "plot failed: rc=${rc} head=${svg}")
 endif()
+# slices: the page's loading path natively, each stage with its slices (the glTF scene's
+# meshes are read in several slices of 1024 units, its BVH built in several).
+execute_process(COMMAND "${BIN}" slices "${SRC}/scenes/gltf-instances.xml" 1024 RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "reading torus-instances.gltf +[0-9.]+ ms in +[0-9]+ slices" OR NOT out MATCHES "building the BVH")
+  message(FATAL_ERROR "slices failed: rc=${rc}\n${out}")
+endif()
+string(REGEX MATCH "building the BVH +[0-9.]+ ms in +([0-9]+) slices" m "${out}")
+if(CMAKE_MATCH_1 LESS 10)
+  message(FATAL_ERROR "the BVH was not built in slices:\n${out}")
+endif()

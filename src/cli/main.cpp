@@ -1,14 +1,19 @@
 // The native command line: render, bench and plot, headless through EGL.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli/options.h"
 #include "core/image.h"
 #include "render/pacing.h"
 #include "gpu/gl.h"
 #include "platform/egl.h"
+#include "render/packing.h"
 #include "scene/xml_loader.h"
 
 namespace pt::cli {
@@ -94,6 +99,49 @@ int run_render(const Options& o) {
   return st.bad == 0 && counters.bad_samples == 0 ? 0 : 3;
 }
 
+// The page's preparation of a scene, natively and without GL: the meshes read or
+// generated (SceneLoad), then the packing and BVH (PackJob), each run in slices of `units`
+// as the page runs them; per stage, the work's time, the slices and the longest slice.
+int run_slices(int argc, char** argv) {
+  if (argc < 1 || argc > 2) usage_error("slices takes SCENE.xml [UNITS]");
+  const std::string path = argv[0];
+  const long units = argc > 1 ? std::max(1L, std::atol(argv[1])) : 8192L;
+  struct Stage {
+    double ms = 0.0, longest = 0.0;
+    long slices = 0;
+  };
+  std::vector<std::pair<std::string, Stage>> stages;
+  auto record = [&](const std::string& name, double ms) {
+    if (stages.empty() || stages.back().first != name) stages.push_back({name, {}});
+    Stage& st = stages.back().second;
+    st.ms += ms;
+    st.longest = std::max(st.longest, ms);
+    ++st.slices;
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  SceneLoad load(read_scene_file(path), path);
+  record("parsing the XML", seconds_since(t0) * 1e3);
+  for (bool done = false; !done;) {
+    const std::string stage = load.stage();
+    const auto t = std::chrono::steady_clock::now();
+    done = load.run(units);
+    record(stage, seconds_since(t) * 1e3);
+  }
+  const Scene scene = load.take();
+  PackJob pack(scene);
+  for (bool done = false; !done;) {
+    const std::string stage = pack.stage();
+    const auto t = std::chrono::steady_clock::now();
+    done = pack.run(units);
+    record(stage, seconds_since(t) * 1e3);
+  }
+  std::printf("%s in slices of %ld units:\n", path.c_str(), units);
+  for (const auto& [name, st] : stages)
+    std::printf("  %-28s %8.1f ms in %6ld slices, the longest %6.1f ms\n", name.c_str(), st.ms, st.slices, st.longest);
+  std::printf("  all: %.1f ms\n", seconds_since(t0) * 1e3);
+  return 0;
+}
+
 }  // namespace pt::cli
 
 int main(int argc, char** argv) {
@@ -107,6 +155,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[1], "watch")) return run_watch(parse_options(argc - 2, argv + 2, false));
     if (!std::strcmp(argv[1], "bench")) return run_bench(parse_options(argc - 2, argv + 2, true));
     if (!std::strcmp(argv[1], "plot")) return run_plot(argc - 2, argv + 2);
+    if (!std::strcmp(argv[1], "slices")) return run_slices(argc - 2, argv + 2);
     usage_error(std::string("unknown command ") + argv[1]);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pathtracer: %s\n", e.what());

@@ -16,6 +16,8 @@ const char* const kUsage =
     "       pathtracer bench SCENE.xml [options] --seconds S (--reference REF.pfm|.hdr | --reference-value V)\n"
     "                        [--csv FILE] [--label NAME]\n"
     "       pathtracer plot OUT.svg (--x seconds|spp) A.csv [B.csv ...]\n"
+    "       pathtracer slices SCENE.xml [UNITS]  (the page's loading: read and pack in slices of UNITS,\n"
+    "                        default 8192; prints each stage's work, slices and longest slice; no GL)\n"
     "options:\n"
     "  --size WxH        image size (default 512x512)\n"
     "  --bounces N       scattering events per path, 1..64 (default 8)\n"

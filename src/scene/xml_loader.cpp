@@ -716,6 +716,7 @@ SceneLoad::SceneLoad(const std::string& text, const std::string& path, bool allo
     } catch (const InputError&) {
     }
   }
+  s_->stage = s_->sources.empty() ? "building the scene" : "reading the meshes";
   job_ = steps();
 }
 
