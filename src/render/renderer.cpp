@@ -31,7 +31,7 @@ Renderer::Renderer() : limits_(GlLimits::query()) {
   limits_.require_units(int(kUvUnit) + 1, "the integrator");
   limits_.require_draw_buffers(2, "the accumulator (radiance and statistics targets)");
   glGenVertexArrays(1, &vao_);
-  display_ = Program(fullscreen_vertex(), generate_display());
+  display_[int(settings_.tonemap)] = Program(fullscreen_vertex(), generate_display(settings_.tonemap));
   // Float render targets need EXT_color_buffer_float on WebGL 2 / GLES 3.0. Without it we
   // try half floats (the running mean keeps ~3 significant digits), and otherwise stop
   // with a message: an 8-bit accumulator cannot hold a converging HDR estimate.
@@ -342,10 +342,10 @@ int Renderer::step() {
 }
 
 void Renderer::display(int x, int y) const {
-  Program& p = const_cast<Program&>(display_);
+  Program& p = display_[int(settings_.tonemap)];
+  if (!p.id()) p = Program(fullscreen_vertex(), generate_display(settings_.tonemap));
   p.use();
   p.set("u_accum", int(kAccumUnit));
-  p.set("u_tonemap", int(settings_.tonemap));
   p.set("u_exposure", settings_.exposure);
   p.set("u_offset", glm::ivec2(x, y));
   accum_[cur_].bind(kAccumUnit);

@@ -132,7 +132,7 @@ class Renderer {
   Program* integrator_ = nullptr;
   const ShaderSource* source_ = nullptr;
   std::unordered_map<uint64_t, std::unique_ptr<CachedProgram>> cache_;
-  Program display_;
+  mutable Program display_[kNumToneMaps];  // built on first use, one per tone map
   Texture shape_tex_, material_tex_, light_tex_;
   Texture node_tex_, prim_tex_, vertex_tex_;  // the BVH, its primitives, mesh vertex attributes
   Texture env_tex_, env_cdf_tex_;  // when the scene has an environment map
