@@ -30,7 +30,7 @@ constexpr int kMaxPassesPerFrame = 64;
 // A draw is a tile of a sweep (Renderer::step): a band of rows or, at kMinBandRows
 // rows, part of such a band. When even one draw per frame keeps frames slower than
 // kSlowDrawFrameMs (under 30 UI frames/s: two frames in a row, or one twice as slow)
-// the draw shrinks: rows first, then columns, down to kMinBandRows x kMinBandColumns.
+// the draw shrinks: rows first, then columns, down to kMinBandRows x min_band_columns().
 // It grows back while frames are faster than kGrowDrawFrameMs: columns to the whole
 // width, then rows to the whole image, then more draws per frame. Growth is gentle
 // unless frames are fast: a software GL spends a large fixed time per frame (SwiftShader:
@@ -45,9 +45,14 @@ constexpr double kSlowDrawFrameMs = 34.0;
 constexpr double kGrowDrawFrameMs = 28.0;
 constexpr int kMinBandRows = 4;
 constexpr int kMinBandColumns = 128;
+// Nor are draws smaller than a sweep over this many draws (a bigger canvas, bigger draws):
+// at 30 frames/s a sweep then takes at most about 35 s.
+constexpr int kMaxDrawsPerSweep = 1024;
 // The interval between frames answers a change of the draw size a frame or two late
 // (the browser runs that far ahead of the GPU): no second change before then.
 constexpr int kDrawSettleFrames = 2;
+// How long a floor under the draw size (judge_shrink) holds before shrinking is tried again.
+constexpr double kDrawFloorMs = 5000.0;
 constexpr double kRateWindowMs = 3000.0;
 
 constexpr float kLookDegPerPixel = 0.2f;
@@ -342,8 +347,15 @@ void App::draw_panel() {
   ImGui::End();
 }
 
+// The narrowest tile of a band of kMinBandRows rows.
+int App::min_band_columns() const {
+  const int w = renderer_->width(), h = renderer_->height();
+  const int per_sweep = (double(w) * h) / (double(kMaxDrawsPerSweep) * std::min(kMinBandRows, std::max(1, h))) + 1;
+  return std::min(w, std::max(kMinBandColumns, per_sweep));
+}
+
 // Scales the draw (band_rows x band_columns) by `factor` in pixels: whole rows down to
-// kMinBandRows, then columns down to kMinBandColumns; the reverse when growing.
+// kMinBandRows, then columns down to min_band_columns(); the reverse when growing.
 void App::scale_draw(double factor) {
   const int w = renderer_->width(), h = renderer_->height();
   const int rows = settings_.band_rows > 0 ? std::min(settings_.band_rows, h) : h;
@@ -353,10 +365,29 @@ void App::scale_draw(double factor) {
   const int new_rows = std::clamp(int(pixels / w), std::min(kMinBandRows, h), h);
   const int new_columns = new_rows > kMinBandRows || pixels >= double(kMinBandRows) * w
                               ? w
-                              : std::clamp(int(pixels / kMinBandRows), std::min(kMinBandColumns, w), w);
+                              : std::clamp(int(pixels / kMinBandRows), min_band_columns(), w);
   settings_.band_rows = new_rows >= h ? 0 : new_rows;
   settings_.band_columns = new_columns >= w ? 0 : new_columns;
   draw_settle_ = kDrawSettleFrames;
+}
+
+// Frames still slow after a shrink from shrink_from_pixels_ (frames then
+// shrink_from_ms_) to `pixels` (frames now `ms`): the difference prices a pixel. When
+// even the smallest draw would leave frames slower than kSlowDrawFrameMs, the fixed cost
+// of a frame is what makes them slow (a software GL at a large canvas, or a loaded
+// machine): smaller draws would only slow the sweep down, so the draw goes back to the
+// size before the shrink and stays at least that for kDrawFloorMs. True when it did.
+bool App::judge_shrink(double pixels, double ms, double now_ms) {
+  const double from = shrink_from_pixels_;
+  shrink_from_pixels_ = 0.0;
+  if (from <= pixels) return false;
+  const double per_pixel = std::max(0.0, (shrink_from_ms_ - ms) / (from - pixels));
+  const double smallest = double(std::min(kMinBandRows, renderer_->height())) * min_band_columns();
+  if (ms - per_pixel * std::max(0.0, pixels - smallest) <= kSlowDrawFrameMs) return false;
+  floor_pixels_ = from;
+  floor_set_ms_ = now_ms;
+  scale_draw(from / pixels);
+  return true;
 }
 
 void App::render_passes(double now_ms, double dt_ms) {
@@ -365,7 +396,9 @@ void App::render_passes(double now_ms, double dt_ms) {
   const bool whole = (settings_.band_rows <= 0 || settings_.band_rows >= renderer_->height()) &&
                      (settings_.band_columns <= 0 || settings_.band_columns >= renderer_->width());
   const bool smallest = settings_.band_rows == std::min(kMinBandRows, renderer_->height()) &&
-                        settings_.band_columns == (kMinBandColumns < renderer_->width() ? kMinBandColumns : 0);
+                        settings_.band_columns == (min_band_columns() < renderer_->width() ? min_band_columns() : 0);
+  const double pixels = double(settings_.band_rows > 0 ? std::min(settings_.band_rows, renderer_->height()) : renderer_->height()) *
+                        (settings_.band_columns > 0 ? std::min(settings_.band_columns, renderer_->width()) : renderer_->width());
   const bool settled = draw_settle_ == 0;
   if (draw_settle_ > 0) --draw_settle_;
   // The draw size follows two frames, not one: a browser catching up after a long frame
@@ -375,12 +408,16 @@ void App::render_passes(double now_ms, double dt_ms) {
   if (dt_ms > kSlowFrameMs && !preparing() && settled) {  // frames slowed by a preparation say nothing of the draws
     if (passes_per_frame_ > 1) {
       passes_per_frame_ = std::max(1, int(std::min(0.9, kTargetFrameMs / dt_ms) * passes_per_frame_));
-    } else if (!smallest && dt_ms > 2.0 * kSlowDrawFrameMs) {
-      scale_draw(std::min(0.5, kTargetFrameMs / dt_ms));
-    } else if (!smallest && faster > kSlowDrawFrameMs) {
+    } else if (dt_ms > 2.0 * kSlowDrawFrameMs) {  // far too slow: the draw, surely; shrink at once
+      shrink_from_pixels_ = 0.0;
+      if (!smallest) scale_draw(std::min(0.5, kTargetFrameMs / dt_ms));
+    } else if (faster > kSlowDrawFrameMs && !judge_shrink(pixels, faster, now_ms) && !smallest && pixels > floor_pixels_) {
+      shrink_from_pixels_ = pixels;
+      shrink_from_ms_ = faster;
       scale_draw(0.7);
     }
   }
+  if (now_ms - floor_set_ms_ > kDrawFloorMs) floor_pixels_ = 0.0;
 
   if (renderer_->samples() == 0 && !renderer_->mid_sweep()) restart_ms_ = now_ms;
   const auto t0 = std::chrono::steady_clock::now();
@@ -400,7 +437,10 @@ void App::render_passes(double now_ms, double dt_ms) {
   // Grow only when this frame used all its passes, else an idle (converged) image would
   // ratchet the count up and the next restart would start with one very long frame.
   if (dt_ms > 0 && done == passes_per_frame_ && !preparing() && settled) {
-    if (!whole && slower < kGrowDrawFrameMs) scale_draw(slower < kFastFrameMs ? 2.0 : 1.25);
+    if (!whole && slower < kGrowDrawFrameMs) {
+      shrink_from_pixels_ = 0.0;  // a shrink that let frames get fast did its job
+      scale_draw(slower < kFastFrameMs ? 2.0 : 1.25);
+    }
     else if (whole && dt_ms < kFastFrameMs) passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
   }
 

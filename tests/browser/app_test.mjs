@@ -283,7 +283,8 @@ async function devChecks(context, url, dir) {
 async function viewChecks(context, url) {
   const errors = [];
   const page = await openPage(context, `${url}?scene=live.xml&limit=1`, errors);
-  await until(page, () => window.ptStats().samples >= 1);
+  // A 1280x800 sweep: with SwiftShader the pacing gives it up to ~1000 frames at ~30/s.
+  await until(page, () => window.ptStats().samples >= 1, null, 180000);
   const canvas = await page.evaluate(() => [document.getElementById("canvas").width, devicePixelRatio]);
   let s = await stats(page);
   check("the canvas and render follow the device pixel ratio", canvas[1] === 2 && canvas[0] === 2 * 640 && s.width === canvas[0],
