@@ -23,12 +23,12 @@ uniform vec3 u_env_color;
 // Outputs: the new running mean, and running sums per pixel: x = non-finite samples
 // (dropped), y = rays cast. The fragment pass writes them to two colour targets; the
 // compute kernel (PT_COMPUTE: native GL ES 3.1+) to the same textures as images, over
-// 8x8-pixel groups covering the rows [u_origin.y, u_row_end) of the band.
+// 8x8-pixel groups covering the tile [u_origin, u_end) (columns x, rows y).
 #ifdef PT_COMPUTE
 layout(rgba32f, binding = 0) writeonly uniform highp image2D o_accum_image;
 layout(rgba32f, binding = 1) writeonly uniform highp image2D o_stats_image;
 uniform ivec2 u_origin;
-uniform int u_row_end;
+uniform ivec2 u_end;
 #else
 layout(location = 0) out vec4 o_accum;
 layout(location = 1) out vec4 o_stats;
@@ -83,7 +83,7 @@ void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {
 void main() {
 #ifdef PT_COMPUTE
   ivec2 px = u_origin + ivec2(gl_GlobalInvocationID.xy);
-  if (px.x >= int(u_size.x) || px.y >= u_row_end) return;
+  if (any(greaterThanEqual(px, u_end))) return;
   vec4 accum, stats;
   render_pixel(px, accum, stats);
   imageStore(o_accum_image, px, accum);

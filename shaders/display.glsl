@@ -1,11 +1,11 @@
-// display.glsl: shows the accumulated radiance through the chosen tone map.
+// display.glsl: shows the accumulated radiance through the chosen tone map (PT_TONEMAP,
+// defined by generate_display: one small program per map).
 uniform highp sampler2D u_accum;
-uniform int u_tonemap;
 uniform float u_exposure;
 uniform ivec2 u_offset;  // lower-left corner of the viewport in the target
 out vec4 o_color;
 
 void main() {
   vec3 c = texelFetch(u_accum, ivec2(gl_FragCoord.xy) - u_offset, 0).rgb;
-  o_color = vec4(tone_map(c, u_tonemap, u_exposure), 1.0);
+  o_color = vec4(tone_map(c, PT_TONEMAP, u_exposure), 1.0);
 }

@@ -1,12 +1,13 @@
 // The compute kernel (native GL ES 3.1+) against the fragment pass the page runs: the
 // same generated code behind a different entry point, so the same scene, settings and
 // sample indices must give the same image and the same ray count, for whole sweeps and
-// for sweeps drawn in bands (the band bounds are the kernel's own: u_origin, u_row_end).
+// for sweeps drawn in bands and tiles (the tile bounds are the kernel's own: u_origin, u_end).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "gl_context.h"
 #include "scene/xml_loader.h"
@@ -23,7 +24,7 @@ struct KernelRun {
   bool compute;
 };
 
-KernelRun run_kernel(const Scene& scene, bool compute, int band_rows, RenderMode mode) {
+KernelRun run_kernel(const Scene& scene, bool compute, int band_rows, int band_columns, RenderMode mode) {
   test_gl();
   Renderer r;
   r.resize(37, 29);  // not a multiple of the 8x8 groups: the edge groups are cut
@@ -33,6 +34,7 @@ KernelRun run_kernel(const Scene& scene, bool compute, int band_rows, RenderMode
   st.sample_limit = 6;
   st.spp_per_pass = 2;
   st.band_rows = band_rows;
+  st.band_columns = band_columns;
   r.set_settings(st);
   r.set_scene(scene);
   while (!r.converged()) r.step();
@@ -52,19 +54,21 @@ TEST_CASE("compute kernel: the same image and ray count as the fragment pass", "
   for (const char* name : scenes) {
     const Scene scene = load_scene_file(repo_path(name));
     for (RenderMode mode : {RenderMode::PathTracer, RenderMode::Whitted}) {
-      const KernelRun frag = run_kernel(scene, false, 0, mode);
+      const KernelRun frag = run_kernel(scene, false, 0, 0, mode);
       REQUIRE_FALSE(frag.compute);
-      for (int band : {0, 5}) {
-        const KernelRun comp = run_kernel(scene, true, band, mode);
+      // Whole sweeps, bands of 5 rows, tiles of 5 rows by 11 columns (neither divides
+      // the 37x29 image, and a tile is not a multiple of the 8x8 groups either).
+      for (auto [band, columns] : {std::pair{0, 0}, std::pair{5, 0}, std::pair{5, 11}}) {
+        const KernelRun comp = run_kernel(scene, true, band, columns, mode);
         REQUIRE(comp.compute);
         double max_diff = 0.0, max_value = 0.0;
         for (size_t i = 0; i < frag.rgba.size(); ++i) {
           max_diff = std::max(max_diff, double(std::abs(frag.rgba[i] - comp.rgba[i])));
           max_value = std::max(max_value, double(std::abs(frag.rgba[i])));
         }
-        std::printf("%-40s %-8s bands %d: max |compute - fragment| %.3g (max value %.3g), rays %.0f vs %.0f\n", name,
-                    kRenderModeNames[int(mode)], band, max_diff, max_value, comp.counters.rays, frag.counters.rays);
-        INFO(name << " mode " << kRenderModeNames[int(mode)] << " bands " << band);
+        std::printf("%-40s %-8s tiles %dx%d: max |compute - fragment| %.3g (max value %.3g), rays %.0f vs %.0f\n", name,
+                    kRenderModeNames[int(mode)], band, columns, max_diff, max_value, comp.counters.rays, frag.counters.rays);
+        INFO(name << " mode " << kRenderModeNames[int(mode)] << " tiles " << band << "x" << columns);
         CHECK(max_value > 0.0);
         CHECK(comp.counters.rays == frag.counters.rays);
         CHECK(comp.counters.bad_samples == 0);

@@ -8,7 +8,10 @@
 
 #include "gl_context.h"
 #include "glsl_harness.h"
+#include "render/renderer.h"
 #include "render/tonemap.h"
+#include "scene/xml_loader.h"
+#include "test_paths.h"
 
 using namespace pt;
 
@@ -92,5 +95,35 @@ TEST_CASE("tone maps: anchor values that tell the curves apart", "[tonemap][gpu]
   for (size_t i = 0; i < in.size(); ++i) {
     INFO(kToneMapNames[int(anchors[i].op)] << "(" << anchors[i].x << ")");
     CHECK(out[i] == Approx(anchors[i].expect).margin(1e-4));
+  }
+}
+
+// The display pass compiles one program per tone map (the map a constant, so that a
+// software GL does not run every map's branch for every pixel): each must show the
+// estimate through its own curve.
+TEST_CASE("tone maps: the display program of each map shows the estimate through its curve", "[tonemap][gpu]") {
+  test_gl();
+  Renderer r;
+  r.resize(24, 16);
+  RenderSettings s;
+  s.sample_limit = 2;
+  r.set_settings(s);
+  r.set_scene(load_scene_file(repo_path("scenes/reference/scene2.xml")));
+  while (!r.converged()) r.step();
+  const std::vector<float> radiance = r.read_radiance();
+  for (int op = 0; op < kNumToneMaps; ++op) {
+    s.tonemap = ToneMap(op);
+    s.exposure = 0.7f;
+    r.set_settings(s);
+    CHECK(r.samples() == 2);  // display settings keep the estimate
+    const std::vector<uint8_t> shown = r.read_display();
+    int worst = 0;
+    for (size_t i = 0; i < shown.size(); ++i) {
+      if (i % 4 == 3) continue;
+      const double want = 255.0 * curve(ToneMap(op), double(radiance[i]) * s.exposure);
+      worst = std::max(worst, int(std::ceil(std::abs(shown[i] - want))));
+    }
+    INFO(kToneMapNames[op]);
+    CHECK(worst <= 1);  // 8-bit rounding
   }
 }

@@ -27,14 +27,32 @@ constexpr double kSlowFrameMs = 28.0;
 constexpr double kTargetFrameMs = 22.0;
 constexpr double kCpuBudgetMs = 12.0;
 constexpr int kMaxPassesPerFrame = 64;
-// A draw is a band of rows of a sweep (Renderer::step): when even one draw per frame is
-// slow the band halves, down to kMinBandRows; when frames are fast it grows back to the
-// whole image before more draws per frame are added.
+// A draw is a tile of a sweep (Renderer::step): a band of rows or, at kMinBandRows
+// rows, part of such a band. When even one draw per frame keeps frames slower than
+// kSlowDrawFrameMs (under 30 UI frames/s: two frames in a row, or one twice as slow)
+// the draw shrinks: rows first, then columns, down to kMinBandRows x min_band_columns().
+// It grows back while frames are faster than kGrowDrawFrameMs: columns to the whole
+// width, then rows to the whole image, then more draws per frame. Growth is gentle
+// unless frames are fast: a software GL spends a large fixed time per frame (SwiftShader:
+// about 22 ms for compositing, the panel and the display pass at 960x640 on 2 cores,
+// docs/benchmarks.md), so a draw there may have a few milliseconds, and the pacer has to
+// settle at the largest such draw, not jump past it. A GPU paced by vsync gives frames
+// of 16.7 or 33.3 ms: it grows until frames take two intervals and stays there. Bands
+// keep at least 4 rows: SwiftShader hands pairs of pixel rows to its threads in turn,
+// so a thinner draw leaves one of two cores idle.
 constexpr int kFirstBandRows = 32;
-// Bands shrink only when a one-draw frame is slower than this: a software GL spends a
-// large fixed time per frame that smaller bands cannot remove, only slow the sweep down.
-constexpr double kSlowBandFrameMs = 40.0;
+constexpr double kSlowDrawFrameMs = 34.0;
+constexpr double kGrowDrawFrameMs = 28.0;
 constexpr int kMinBandRows = 4;
+constexpr int kMinBandColumns = 128;
+// Nor are draws smaller than a sweep over this many draws (a bigger canvas, bigger draws):
+// at 30 frames/s a sweep then takes at most about 35 s.
+constexpr int kMaxDrawsPerSweep = 1024;
+// The interval between frames answers a change of the draw size a frame or two late
+// (the browser runs that far ahead of the GPU): no second change before then.
+constexpr int kDrawSettleFrames = 2;
+// How long a floor under the draw size (judge_shrink) holds before shrinking is tried again.
+constexpr double kDrawFloorMs = 5000.0;
 constexpr double kRateWindowMs = 3000.0;
 
 constexpr float kLookDegPerPixel = 0.2f;
@@ -330,35 +348,101 @@ void App::draw_panel() {
   ImGui::End();
 }
 
+// The narrowest tile of a band of kMinBandRows rows.
+int App::min_band_columns() const {
+  const int w = renderer_->width(), h = renderer_->height();
+  const int per_sweep = (double(w) * h) / (double(kMaxDrawsPerSweep) * std::min(kMinBandRows, std::max(1, h))) + 1;
+  return std::min(w, std::max(kMinBandColumns, per_sweep));
+}
+
+// Scales the draw (band_rows x band_columns) by `factor` in pixels: whole rows down to
+// kMinBandRows, then columns down to min_band_columns(); the reverse when growing.
+void App::scale_draw(double factor) {
+  const int w = renderer_->width(), h = renderer_->height();
+  const int rows = settings_.band_rows > 0 ? std::min(settings_.band_rows, h) : h;
+  const int columns = settings_.band_columns > 0 && rows <= kMinBandRows ? std::min(settings_.band_columns, w) : w;
+  const double now = double(rows) * columns;
+  const double pixels = factor > 1.0 ? std::max(now * factor, now + 1.0) : std::min(now * factor, now - 1.0);
+  const int new_rows = std::clamp(int(pixels / w), std::min(kMinBandRows, h), h);
+  const int new_columns = new_rows > kMinBandRows || pixels >= double(kMinBandRows) * w
+                              ? w
+                              : std::clamp(int(pixels / kMinBandRows), min_band_columns(), w);
+  settings_.band_rows = new_rows >= h ? 0 : new_rows;
+  settings_.band_columns = new_columns >= w ? 0 : new_columns;
+  draw_settle_ = kDrawSettleFrames;
+}
+
+// Frames still slow after a shrink from shrink_from_pixels_ (frames then
+// shrink_from_ms_) to `pixels` (frames now `ms`): the difference prices a pixel. When
+// even the smallest draw would leave frames slower than kSlowDrawFrameMs, the fixed cost
+// of a frame is what makes them slow (a software GL at a large canvas, or a loaded
+// machine): smaller draws would only slow the sweep down, so the draw goes back to the
+// size before the shrink and stays at least that for kDrawFloorMs. True when it did.
+bool App::judge_shrink(double pixels, double ms, double now_ms) {
+  const double from = shrink_from_pixels_;
+  shrink_from_pixels_ = 0.0;
+  if (from <= pixels) return false;
+  const double per_pixel = std::max(0.0, (shrink_from_ms_ - ms) / (from - pixels));
+  const double smallest = double(std::min(kMinBandRows, renderer_->height())) * min_band_columns();
+  if (ms - per_pixel * std::max(0.0, pixels - smallest) <= kSlowDrawFrameMs) return false;
+  floor_pixels_ = from;
+  floor_set_ms_ = now_ms;
+  scale_draw(from / pixels);
+  return true;
+}
+
 void App::render_passes(double now_ms, double dt_ms) {
   // The interval since the last frame measures the work queued then (and the hidden time
   // of a background tab, after which the count simply grows back).
-  const int image_rows = renderer_->height();
-  const int band = settings_.band_rows > 0 ? std::min(settings_.band_rows, image_rows) : image_rows;
-  if (dt_ms > kSlowFrameMs && !preparing()) {  // frames slowed by a preparation say nothing of the draws
+  const bool whole = (settings_.band_rows <= 0 || settings_.band_rows >= renderer_->height()) &&
+                     (settings_.band_columns <= 0 || settings_.band_columns >= renderer_->width());
+  const bool smallest = settings_.band_rows == std::min(kMinBandRows, renderer_->height()) &&
+                        settings_.band_columns == (min_band_columns() < renderer_->width() ? min_band_columns() : 0);
+  const double pixels = double(settings_.band_rows > 0 ? std::min(settings_.band_rows, renderer_->height()) : renderer_->height()) *
+                        (settings_.band_columns > 0 ? std::min(settings_.band_columns, renderer_->width()) : renderer_->width());
+  const bool settled = draw_settle_ == 0;
+  if (draw_settle_ > 0) --draw_settle_;
+  // The draw size follows two frames, not one: a browser catching up after a long frame
+  // delivers the next one at once (short), and a single slow frame may be a hiccup.
+  const double slower = std::max(dt_ms, prev_dt_ms_), faster = std::min(dt_ms, prev_dt_ms_);
+  prev_dt_ms_ = dt_ms;
+  if (dt_ms > kSlowFrameMs && !preparing() && settled) {  // frames slowed by a preparation say nothing of the draws
     if (passes_per_frame_ > 1) {
       passes_per_frame_ = std::max(1, int(std::min(0.9, kTargetFrameMs / dt_ms) * passes_per_frame_));
-    } else if (band > kMinBandRows && dt_ms > kSlowBandFrameMs) {
-      settings_.band_rows = std::max(kMinBandRows, int(band * std::min(0.5, kTargetFrameMs / dt_ms)));
+    } else if (dt_ms > 2.0 * kSlowDrawFrameMs) {  // far too slow: the draw, surely; shrink at once
+      shrink_from_pixels_ = 0.0;
+      if (!smallest) scale_draw(std::min(0.5, kTargetFrameMs / dt_ms));
+    } else if (faster > kSlowDrawFrameMs && !judge_shrink(pixels, faster, now_ms) && !smallest && pixels > floor_pixels_) {
+      shrink_from_pixels_ = pixels;
+      shrink_from_ms_ = faster;
+      scale_draw(0.7);
     }
   }
+  if (now_ms - floor_set_ms_ > kDrawFloorMs) floor_pixels_ = 0.0;
 
-  if (renderer_->samples() == 0) restart_ms_ = now_ms;
+  if (renderer_->samples() == 0 && !renderer_->mid_sweep()) restart_ms_ = now_ms;
   const auto t0 = std::chrono::steady_clock::now();
   int done = 0;
   // While a scene is being prepared, one draw per frame: the preparation gets the time
   // (and, with a software GPU, the CPU) that more draws would take.
   const int passes = preparing() ? 1 : passes_per_frame_;
+  const double image_pixels = std::max(1.0, double(renderer_->width()) * renderer_->height());
   while (done < passes && !renderer_->converged()) {
-    total_samples_ += renderer_->step();  // samples count when a sweep completes
+    renderer_->step();
+    // Samples count as they are drawn, in fractions of the image: a sweep of small tiles
+    // on a slow GPU may take longer than the rate's window.
+    total_samples_ += double(renderer_->last_draw_samples()) / image_pixels;
     ++done;
     if (ms_since(t0) > kCpuBudgetMs) break;
   }
   // Grow only when this frame used all its passes, else an idle (converged) image would
   // ratchet the count up and the next restart would start with one very long frame.
-  if (dt_ms > 0 && dt_ms < kFastFrameMs && done == passes_per_frame_ && !preparing()) {
-    if (band < image_rows) settings_.band_rows = band * 2 >= image_rows ? 0 : band * 2;
-    else passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
+  if (dt_ms > 0 && done == passes_per_frame_ && !preparing() && settled) {
+    if (!whole && slower < kGrowDrawFrameMs) {
+      shrink_from_pixels_ = 0.0;  // a shrink that let frames get fast did its job
+      scale_draw(slower < kFastFrameMs ? 2.0 : 1.25);
+    }
+    else if (whole && dt_ms < kFastFrameMs) passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
   }
 
   if (!renderer_->converged()) done_ms_ = -1.0;  // a raised limit resumes the clock
@@ -373,7 +457,7 @@ void App::render_passes(double now_ms, double dt_ms) {
   // The samples issued by the frames after the oldest one, over the time since it.
   const RatePoint& first = rate_history_.front();
   const bool finished = renderer_->converged() && now_ms > first.ms;  // a short render gets a rate too
-  if (now_ms - first.ms >= 1000.0 || finished) samples_per_second_ = double(total_samples_ - first.samples) * 1000.0 / (now_ms - first.ms);
+  if (now_ms - first.ms >= 1000.0 || finished) samples_per_second_ = (total_samples_ - first.samples) * 1000.0 / (now_ms - first.ms);
 }
 
 void App::present(int fb_w, int fb_h) {
@@ -431,6 +515,7 @@ std::string App::stats_json() const {
   j += ",\"samplesPerSecond\":" + json_number(samples_per_second_);
   j += ",\"passesPerFrame\":" + std::to_string(passes_per_frame_);
   j += ",\"bandRows\":" + std::to_string(settings_.band_rows);
+  j += ",\"bandColumns\":" + std::to_string(settings_.band_columns);
   j += ",\"width\":" + std::to_string(renderer_->width());
   j += ",\"height\":" + std::to_string(renderer_->height());
   j += std::string(",\"accumFormat\":") + (renderer_->accum_format() == GL_RGBA32F ? "\"rgba32f\"" : "\"rgba16f\"");

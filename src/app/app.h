@@ -91,6 +91,9 @@ class App {
   void draw_panel();
   void draw_scene_controls();
   void render_passes(double now_ms, double dt_ms);
+  void scale_draw(double factor);
+  int min_band_columns() const;
+  bool judge_shrink(double pixels, double ms, double now_ms);
   void present(int fb_w, int fb_h);
   void scan_scenes();
   // app_interaction.cpp: scene switching, picking and the selection panel, render size.
@@ -116,16 +119,20 @@ class App {
   // Frame pacing: the number of passes per frame adapts to the interval between frames.
   double last_frame_ms_ = -1.0;
   int passes_per_frame_ = 1;
+  int draw_settle_ = 0;  // frames before the draw size may change again
+  double prev_dt_ms_ = 0.0;  // the interval before the last one
+  double shrink_from_pixels_ = 0.0, shrink_from_ms_ = 0.0;  // the last shrink: draw size and frame time before it
+  double floor_pixels_ = 0.0, floor_set_ms_ = -1e9;  // no shrink below this, for a while (judge_shrink)
 
   // Progress: samples per second over the last few seconds of rendering (frames can be
   // slow: with a software GPU one pass may take most of a second); elapsed time since the
   // restart.
   struct RatePoint {
     double ms;
-    long samples;  // samples issued up to and including this frame
+    double samples;  // samples drawn up to and including this frame (fractions of the image)
   };
   std::vector<RatePoint> rate_history_;
-  long total_samples_ = 0;
+  double total_samples_ = 0;
   double samples_per_second_ = 0.0;
   double restart_ms_ = 0.0, done_ms_ = -1.0;
 

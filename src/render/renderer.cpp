@@ -53,7 +53,7 @@ Renderer::Renderer() : limits_(GlLimits::query()) {
   limits_.require_units(int(kUvUnit) + 1, "the integrator");
   limits_.require_draw_buffers(2, "the accumulator (radiance and statistics targets)");
   glGenVertexArrays(1, &vao_);
-  display_ = Program(fullscreen_vertex(), generate_display());
+  display_[int(settings_.tonemap)] = Program(fullscreen_vertex(), generate_display(settings_.tonemap));
   // Float render targets need EXT_color_buffer_float on WebGL 2 / GLES 3.0. Without it we
   // try half floats (the running mean keeps ~3 significant digits), and otherwise stop
   // with a message: an 8-bit accumulator cannot hold a converging HDR estimate.
@@ -240,6 +240,7 @@ void Renderer::set_settings(const RenderSettings& s) {
   a.sample_limit = b.sample_limit;
   a.spp_per_pass = b.spp_per_pass;
   a.band_rows = b.band_rows;
+  a.band_columns = b.band_columns;
   if (!(a == b)) restart();
   const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute;
   settings_ = s;
@@ -267,16 +268,22 @@ void Renderer::resize(int width, int height) {
 }
 
 int Renderer::step() {
+  last_draw_samples_ = 0;
   if (!integrator_ || converged()) return 0;
-  if (next_row_ == 0) {  // a sweep starts: its sample count is fixed until it ends
+  if (next_row_ == 0 && next_column_ == 0) {  // a sweep starts: its sample count is fixed until it ends
     sweep_spp_ = settings_.spp_per_pass < 1 ? 1 : settings_.spp_per_pass;
     if (settings_.sample_limit > 0 && samples_ + sweep_spp_ > settings_.sample_limit)
       sweep_spp_ = settings_.sample_limit - samples_;
   }
   const int spp = sweep_spp_;
-  const int rows = settings_.band_rows > 0 ? std::min(settings_.band_rows, height_) : height_;
-  const int y0 = next_row_, y1 = std::min(height_, y0 + rows);
-  const bool whole = y0 == 0 && y1 == height_;
+  if (next_column_ == 0) {  // a band starts: its rows hold until its last tile is drawn
+    const int rows = settings_.band_rows > 0 ? std::min(settings_.band_rows, height_) : height_;
+    band_end_ = std::min(height_, next_row_ + rows);
+  }
+  const int columns = settings_.band_columns > 0 ? std::min(settings_.band_columns, width_) : width_;
+  const int x0 = next_column_, x1 = std::min(width_, x0 + columns);
+  const int y0 = next_row_, y1 = band_end_;
+  const bool whole = x0 == 0 && y0 == 0 && x1 == width_ && y1 == height_;
   if (needs_clear_) {  // rows not yet swept show black, not another scene's image
     const float zero[4] = {0, 0, 0, 0};
     for (Framebuffer& f : fbo_) {
@@ -346,9 +353,9 @@ int Renderer::step() {
 #ifndef __EMSCRIPTEN__
     glBindImageTexture(0, accum_[1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, stats_[1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    p.set("u_origin", glm::ivec2(0, y0));
-    p.set("u_row_end", y1);
-    glDispatchCompute(GLuint((width_ + 7) / 8), GLuint((y1 - y0 + 7) / 8), 1);
+    p.set("u_origin", glm::ivec2(x0, y0));
+    p.set("u_end", glm::ivec2(x1, y1));
+    glDispatchCompute(GLuint((x1 - x0 + 7) / 8), GLuint((y1 - y0 + 7) / 8), 1);
     PT_GL_CHECK("glDispatchCompute (integrator)");
     // What reads the images next: texelFetch (the next pass), blits and glReadPixels.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT |
@@ -363,7 +370,7 @@ int Renderer::step() {
       glDisable(GL_SCISSOR_TEST);
     } else {
       glEnable(GL_SCISSOR_TEST);
-      glScissor(0, y0, width_, y1 - y0);
+      glScissor(x0, y0, x1 - x0, y1 - y0);
     }
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -372,8 +379,8 @@ int Renderer::step() {
   if (whole) {
     cur_ = 1 - cur_;
   } else {
-    // Copy the band back into the texture it read: the pair agrees again on these rows,
-    // so later bands and sweeps read consistent data without a swap.
+    // Copy the tile back into the texture it read: the pair agrees again on these pixels,
+    // so later tiles and sweeps read consistent data without a swap.
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_[1 - cur_].id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_[cur_].id());
@@ -382,14 +389,20 @@ int Renderer::step() {
                               a == 1 ? GLenum(GL_COLOR_ATTACHMENT1) : GLenum(GL_NONE)};
       glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + a));
       glDrawBuffers(2, bufs);
-      glBlitFramebuffer(0, y0, width_, y1, 0, y0, width_, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-      PT_GL_CHECK("glBlitFramebuffer (band copy-back)");
+      glBlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      PT_GL_CHECK("glBlitFramebuffer (tile copy-back)");
     }
     const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(2, both);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  last_draw_samples_ = long(x1 - x0) * (y1 - y0) * spp;
+  if (x1 < width_) {
+    next_column_ = x1;
+    return 0;
+  }
+  next_column_ = 0;
   next_row_ = y1 == height_ ? 0 : y1;
   if (next_row_ != 0) return 0;
   samples_ += spp;
@@ -397,10 +410,10 @@ int Renderer::step() {
 }
 
 void Renderer::display(int x, int y) const {
-  Program& p = const_cast<Program&>(display_);
+  Program& p = display_[int(settings_.tonemap)];
+  if (!p.id()) p = Program(fullscreen_vertex(), generate_display(settings_.tonemap));
   p.use();
   p.set("u_accum", int(kAccumUnit));
-  p.set("u_tonemap", int(settings_.tonemap));
   p.set("u_exposure", settings_.exposure);
   p.set("u_offset", glm::ivec2(x, y));
   accum_[cur_].bind(kAccumUnit);

@@ -25,6 +25,7 @@ struct RenderSettings {
   int max_bounces = 8;   // scattering events per path (seed: 8, range 1..16)
   int spp_per_pass = 1;  // samples per pixel in one draw (fixed for a whole sweep)
   int band_rows = 0;     // rows per draw: a sweep of the image is several draws; 0 = all
+  int band_columns = 0;  // columns per draw: a band is several tiles, left to right; 0 = all
   int sample_limit = 0;  // stop after this many samples per pixel; 0 = never
   bool nee = true;       // next-event estimation with MIS (off: BSDF sampling only)
   RenderMode mode = RenderMode::PathTracer;  // a different program per mode
@@ -67,17 +68,23 @@ class Renderer {
   void resize(int width, int height);
   void restart() {
     samples_ = 0;
-    next_row_ = 0;
+    next_row_ = next_column_ = 0;
     needs_clear_ = true;
   }
 
-  // One draw: the next band of rows of the current sweep (the whole image when
-  // band_rows is 0), unless the sample limit is reached. A sweep adds spp_per_pass
+  // One draw: the next tile of the current sweep, unless the sample limit is reached. A
+  // sweep is bands of band_rows rows, bottom to top (the whole image when 0); a band is
+  // tiles of band_columns columns, left to right (the whole band when 0). A band's rows
+  // are fixed when it starts, so band_rows and band_columns may change between any two
+  // draws and every pixel is still drawn once per sweep. A sweep adds spp_per_pass
   // samples to every pixel; returns the samples added when this draw completed a sweep,
-  // else 0. Bands keep each draw short (no watchdog, a responsive page); the estimate is
+  // else 0. Tiles keep each draw short (no watchdog, a responsive page); the estimate is
   // the same.
   int step();
-  bool mid_sweep() const { return next_row_ != 0; }
+  bool mid_sweep() const { return next_row_ != 0 || next_column_ != 0; }
+  // The pixel samples the last step() drew: its pixels times the sweep's samples per
+  // pixel (0 when it drew nothing).
+  long last_draw_samples() const { return last_draw_samples_; }
   // One draw, waited for, then a restart: drivers that compile a program's machine code
   // at its first use (Mesa's llvmpipe does, for compute kernels) do it here, outside a
   // timed render. The estimate is as if it never ran.
@@ -144,7 +151,7 @@ class Renderer {
   Program* integrator_ = nullptr;
   const ShaderSource* source_ = nullptr;
   std::unordered_map<uint64_t, std::unique_ptr<CachedProgram>> cache_;
-  Program display_;
+  mutable Program display_[kNumToneMaps];  // built on first use, one per tone map
   Texture shape_tex_, material_tex_, light_tex_;
   Texture node_tex_, prim_tex_, vertex_tex_;  // the BVH, its primitives, mesh vertex attributes
   Texture env_tex_, env_cdf_tex_;  // when the scene has an environment map
@@ -161,7 +168,10 @@ class Renderer {
   GLuint vao_ = 0;
   int cur_ = 0;
   int samples_ = 0;
-  int next_row_ = 0;      // first row of the next band; 0 = a new sweep starts
+  int next_row_ = 0;      // first row of the band in progress or the next one; with
+  int next_column_ = 0;   // this 0 too, a new sweep starts; else the band's next tile
+  int band_end_ = 0;      // the row after the band in progress (fixed while it lasts)
+  long last_draw_samples_ = 0;
   int sweep_spp_ = 1;     // samples per pixel of the sweep in progress
   bool needs_clear_ = true;
   int width_ = 0, height_ = 0;

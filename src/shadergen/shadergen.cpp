@@ -245,10 +245,10 @@ ShaderSource generate_integrator(const Features& f) {
                           "<generated integrator>");
 }
 
-ShaderSource generate_display() {
+ShaderSource generate_display(ToneMap tonemap) {
   return resolve_includes(
       "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
-      "#include \"tonemap.glsl\"\n#include \"display.glsl\"\n",
+      "#define PT_TONEMAP " + std::to_string(int(tonemap)) + "\n#include \"tonemap.glsl\"\n#include \"display.glsl\"\n",
       "<generated display>");
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/render_mode.h"
+#include "render/tonemap.h"
 #include "scene/scene.h"
 
 namespace pt {
@@ -56,7 +57,10 @@ ShaderSource resolve_includes(const std::string& root_text, const std::string& r
 std::string generate_prelude(const Features& f);
 // The render program: the prelude and the mode's root file (kRenderModeRoots).
 ShaderSource generate_integrator(const Features& f);
-ShaderSource generate_display();
+// The display pass for one tone map: a constant, not a uniform, so that the other maps'
+// branches are compiled away (SwiftShader runs every branch of a uniform switch for
+// every pixel: the uniform made the display pass about twice as slow there).
+ShaderSource generate_display(ToneMap tonemap);
 ShaderSource fullscreen_vertex();
 
 }  // namespace pt

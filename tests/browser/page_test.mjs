@@ -335,7 +335,7 @@ async function main() {
     }));
     const f = await stats(fast);
     console.log(`chromium scene2 512x512: ${f.samplesPerSecond.toFixed(2)} spp/s (${f.samples} samples in ~10 s, ${f.renderer}); ` +
-                `${fps.toFixed(1)} UI frames/s while rendering, ${f.passesPerFrame} draw(s) per frame of ${f.bandRows || 512} rows`);
+                `${fps.toFixed(1)} UI frames/s while rendering, ${f.passesPerFrame} draw(s) per frame of ${f.bandRows || 512} rows` + (f.bandColumns ? ` x ${f.bandColumns} columns` : ""));
     if (errors2.length) check("no console or page errors at 512x512", false, errors2.join(" | "));
     await fast.close();
   } finally {
