@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <charconv>
 #include <string_view>
@@ -33,7 +34,7 @@ constexpr int kStepLines = 1024;  // lines (or faces) between two checks of the 
 // statements only, finite numbers of sane size, face indices that refer to an element
 // defined before them (OBJ's rule). It keeps the numbers and faces as it goes; triangles
 // and quads are split here as tinyobjloader splits them (a quad along its shorter
-// diagonal), and a file with a larger polygon is handed to tinyobjloader's ear clipping.
+// diagonal), and a larger polygon by tinyobjloader's ear clipping (ear_clip).
 class ObjReader {
  public:
   explicit ObjReader(const std::string& path) : path_(path) {}
@@ -43,7 +44,6 @@ class ObjReader {
   };
   std::vector<float> v, vt, vn;  // x y z per v and vn; u v per vt
   std::vector<Corner> corners;   // triangles, three corners each
-  bool polygons = false;         // a face of more than four corners: tinyobjloader triangulates
   bool has_vt = false, has_vn = false;
 
   // Resumable (a unit: a byte of text); `text` must outlive it.
@@ -164,6 +164,32 @@ class ObjReader {
     return {out[0], out[1], out[2]};
   }
 
+  // A polygon of more than four corners, triangulated by tinyobjloader's ear clipping: the
+  // polygon alone as a small OBJ text (its corners' positions, one face), so that what is
+  // split is exactly what this reader read. Indices into face_, three per triangle.
+  std::vector<int> ear_clip() const {
+    std::string text;
+    char line[96];
+    for (const Corner& c : face_) {
+      std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(v[size_t(c.v) * 3]), double(v[size_t(c.v) * 3 + 1]), double(v[size_t(c.v) * 3 + 2]));
+      text += line;
+    }
+    text += "f";
+    for (size_t k = 1; k <= face_.size(); ++k) text += " " + std::to_string(k);
+    text += "\n";
+    tinyobj::ObjReaderConfig config;
+    config.vertex_color = false;
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromString(text, "", config)) fail("tinyobjloader cannot triangulate this polygon");
+    std::vector<int> out;
+    for (const tinyobj::shape_t& shape : reader.GetShapes())
+      for (const tinyobj::index_t& i : shape.mesh.indices) {
+        if (i.vertex_index < 0 || size_t(i.vertex_index) >= face_.size()) fail("tinyobjloader triangulated this polygon with a corner it does not have");
+        out.push_back(i.vertex_index);
+      }
+    return out;
+  }
+
   float sq_distance(const Corner& a, const Corner& b) const {
     float d = 0.0f;
     for (int k = 0; k < 3; ++k) {
@@ -210,7 +236,7 @@ class ObjReader {
         if (sq_distance(a, c) < sq_distance(b, d)) corners.insert(corners.end(), {a, b, c, a, c, d});
         else corners.insert(corners.end(), {a, b, d, b, c, d});
       } else {
-        polygons = true;
+        for (const int c : ear_clip()) corners.push_back(face_[size_t(c)]);
       }
       ++faces_;
     } else if (k == "o" || k == "g" || k == "s" || k == "usemtl" || k == "mtllib") {
@@ -227,28 +253,6 @@ class ObjReader {
   std::vector<Corner> face_;
 };
 
-// Triangles by tinyobjloader (its ear clipping for polygons of more than four corners),
-// as corners; the reader has checked the text.
-std::vector<ObjReader::Corner> tinyobj_corners(const std::string& text, const std::string& path) {
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  // From a string, "mtllib" reads nothing from disk: materials are the scene's.
-  if (!reader.ParseFromString(text, "", config)) {
-    std::string why = reader.Error();
-    while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
-    throw InputError(path, 0, why.empty() ? "cannot read the OBJ file" : why);
-  }
-  std::vector<ObjReader::Corner> out;
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    const auto& idx = shape.mesh.indices;
-    for (size_t f = 0; f + 2 < idx.size(); f += 3)
-      for (size_t k = 0; k < 3; ++k) out.push_back({idx[f + k].vertex_index, idx[f + k].texcoord_index, idx[f + k].normal_index});
-  }
-  return out;
-}
-
 }  // namespace
 
 Resumable parse_mesh_obj_steps(std::string text, std::string path, MeshData& m) {
@@ -257,7 +261,6 @@ Resumable parse_mesh_obj_steps(std::string text, std::string path, MeshData& m) 
   Resumable read = r.read(text);
   while (!co_await read) {
   }
-  if (r.polygons) r.corners = tinyobj_corners(text, path);  // one step: rare, and not sliced
   // OBJ indexes positions, texture coordinates and normals separately; MeshData has one
   // index per vertex, so each distinct (v, vt, vn) triple becomes one vertex, numbered as
   // first used. Corners of faces without vt or vn (where other faces have them) get uv 0

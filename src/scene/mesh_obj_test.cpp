@@ -158,3 +158,11 @@ TEST_CASE("an OBJ polygon of more than four corners is triangulated by tinyobjlo
   }
   CHECK(area == Approx(3.0f));  // the L's area: the triangles cover it without overlap
 }
+
+TEST_CASE("an OBJ polygon is split as this reader read it (a comment after its last corner holds a number)", "[loader][mesh][obj]") {
+  // A fuzzer finding: handed the whole file, tinyobjloader read "5# 82" as corners 5 and
+  // 82 and the mesh was built past its vertices; the polygon is now passed to it alone.
+  const MeshData m = parse_mesh_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 2 0\nf 1 2 3 4 5# 82\n", "c.obj");
+  CHECK(m.triangles.size() == 3);
+  CHECK(m.positions.size() == 5);
+}
