@@ -9,16 +9,7 @@
 #include <vector>
 
 #define TINYOBJLOADER_IMPLEMENTATION
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#endif
-#include <tiny_obj_loader.h>
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
+#include "scene/tinyobj.h"
 
 #include "core/error.h"
 #include "core/file_io.h"

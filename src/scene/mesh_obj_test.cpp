@@ -6,16 +6,7 @@
 #include <string>
 #include <tuple>
 
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#endif
-#include <tiny_obj_loader.h>  // the oracle (its definitions are compiled in scene/mesh_obj.cpp)
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
+#include "scene/tinyobj.h"  // the oracle (its definitions are compiled in scene/mesh_obj.cpp)
 
 #include "core/error.h"
 #include "scene/mesh_obj.h"
