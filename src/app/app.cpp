@@ -149,9 +149,7 @@ bool App::load_scene(const std::string& path, bool keep_camera) {
     l.path = path;
     l.read = std::move(read);
     l.keep_camera = keep_camera && loads_ > 0;
-    l.since = std::chrono::steady_clock::now();
-    loading_ = std::move(l);  // a newer request replaces one in progress
-    packed_.reset();
+    begin_loading(std::move(l));
     return true;
   } catch (const std::exception& e) {
     error_ = e.what();

@@ -169,6 +169,8 @@ class App {
     double upload_ms = 0.0;
     int slices = 0;
   };
+  void begin_loading(Loading l);    // as loading_, replacing one in progress
+  void start_packing(Loading& l);   // once l.scene is read
   void load_failed(std::string path, std::string why);
   std::string load_fields() const;
   std::string load_stage() const;  // of the scene on its way: "reading model.glb", "building the BVH", ...

@@ -36,15 +36,23 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 void App::start_loading(Scene scene, bool keep_camera) {
-  packed_.reset();  // the shown scene's packing is not edited while another is prepared
   Loading l;
   l.path = scene.path;
   l.scene = std::make_unique<Scene>(std::move(scene));
-  renderer_->program_ready(*l.scene);  // its program starts building alongside the packing
-  l.pack = std::make_unique<PackJob>(*l.scene);
+  start_packing(l);
   l.keep_camera = keep_camera;
+  begin_loading(std::move(l));
+}
+
+void App::begin_loading(Loading l) {
+  packed_.reset();  // the shown scene's packing is not edited while another is prepared
   l.since = std::chrono::steady_clock::now();
   loading_ = std::move(l);  // a newer request replaces one in progress
+}
+
+void App::start_packing(Loading& l) {
+  renderer_->program_ready(*l.scene);  // its program starts building alongside the packing
+  l.pack = std::make_unique<PackJob>(*l.scene);
 }
 
 bool App::work(double budget_ms) {
@@ -65,8 +73,7 @@ bool App::work(double budget_ms) {
         l.read.reset();
         std::printf("scene %s: read in %d slices (%.0f ms of work, %.0f ms after the request)\n", l.path.c_str(), l.read_slices,
                     l.read_ms, ms_since(l.since));
-        renderer_->program_ready(*l.scene);  // its program starts building alongside the packing
-        l.pack = std::make_unique<PackJob>(*l.scene);
+        start_packing(l);
       }
     } else if (!l.packed) {
       bool done = false;
@@ -325,7 +332,7 @@ void App::draw_loading() {
     const char* frames = "|/-\\";  // a spinner: the driver compiles in the background
     std::snprintf(overlay, sizeof overlay, "compiling shader %c %.1f s", frames[int(last_frame_ms_ / 120.0) & 3], s);
   } else {
-    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", l.read ? l.read->stage().c_str() : l.pack->stage(), 100.0 * load_progress(), s);
+    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", load_stage().c_str(), 100.0 * load_progress(), s);
   }
   ImGui::ProgressBar(float(load_progress()), ImVec2(ImGui::GetFontSize() * 20.0f, 0.0f), overlay);
 }

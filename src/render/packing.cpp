@@ -323,15 +323,14 @@ bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>
   const Shape& s = scene.shapes[size_t(shape)];
   const BvhRole role = info(s.kind).bvh;
   if (s.kind == ShapeKind::Mesh || role == BvhRole::None) return false;
-  // Its primitive: analytic shapes are tagged -1 - shape, a lone triangle `shape`.
-  const int tag = role == BvhRole::Triangles ? shape : -1 - shape;
-  int k = -1;
-  for (int i = 0; i < p.prims.count() && k < 0; ++i)
-    if (int(p.prims.get(i, prim_rec::tag)) == tag) k = i;
-  const glm::vec3 v[3] = {s.a, s.b, s.c};
-  if (role == BvhRole::Triangles && (k < 0) != degenerate(v)) return false;  // it enters or leaves the BVH
-  if (k < 0) return true;  // a degenerate triangle that stays one: nothing to draw
-  if (p.node_parent.empty() && p.nodes.count() > 0) {
+  if (p.shape_prim.empty()) {  // the first refit: who is whose, once
+    // Analytic shapes' primitives are tagged -1 - shape, a lone triangle's `shape`.
+    p.shape_prim.assign(scene.shapes.size(), -1);
+    for (int q = 0; q < p.prims.count(); ++q) {
+      const int tag = int(p.prims.get(q, prim_rec::tag));
+      const int owner = tag < 0 ? -1 - tag : tag;
+      if (tag < 0 || scene.shapes[size_t(owner)].kind != ShapeKind::Mesh) p.shape_prim[size_t(owner)] = q;
+    }
     p.node_parent.assign(size_t(p.nodes.count()), -1);
     p.prim_leaf.assign(size_t(p.prims.count()), -1);
     for (int n = 0; n < p.nodes.count(); ++n) {
@@ -342,6 +341,10 @@ bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>
         p.node_parent[size_t(first)] = p.node_parent[size_t(first) + 1] = n;
     }
   }
+  const int k = p.shape_prim[size_t(shape)];
+  const glm::vec3 v[3] = {s.a, s.b, s.c};
+  if (role == BvhRole::Triangles && (k < 0) != degenerate(v)) return false;  // it enters or leaves the BVH
+  if (k < 0) return true;  // a degenerate triangle that stays one: nothing to draw
   if (role == BvhRole::Triangles) write_triangle_prim(p, k, shape, v, glm::vec3(-1.0f));
   else write_analytic_prim(p, k, s, shape);
   prims.push_back(k);
@@ -374,9 +377,6 @@ bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>
     p.nodes.set(n, node_rec::hi, b.hi);
     nodes.push_back(n);
   }
-  p.shapes = RecordBuffer(shape_rec::kTexels);  // the shape's own record (and the lights naming it)
-  p.lights = RecordBuffer(light_rec::kTexels);
-  pack_shapes(scene, p);
   return true;
 }
 

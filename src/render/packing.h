@@ -20,9 +20,9 @@ struct PackedScene {
   int bvh_depth = 0;
   float motion_bound = 0.0f;  // moving spheres are bounded over times [0, motion_bound]
   double bvh_build_ms = 0.0;
-  // For refit_shape, made on its first call: each node's parent (-1: the root) and each
-  // primitive's leaf (-1: unbounded).
-  std::vector<int> node_parent, prim_leaf;
+  // For refit_shape, made on its first call: each node's parent (-1: the root), each
+  // primitive's leaf (-1: unbounded) and each analytic shape's primitive (-1: none).
+  std::vector<int> node_parent, prim_leaf, shape_prim;
 };
 
 // The traversal's stack holds at most depth - 1 entries: hierarchies deeper than this are
@@ -30,12 +30,14 @@ struct PackedScene {
 inline constexpr int kBvhStackSize = 48;
 
 PackedScene pack_scene(const Scene& scene);  // runs a PackJob to completion
-// An edit that moved or resized shape `shape` in place: its shape and primitive records
-// are written again and the boxes of the BVH nodes above it recomputed up to the root
+// An edit that moved or resized shape `shape` in place: its primitive record is written
+// again and the boxes of the BVH nodes above it recomputed up to the root
 // (the tree stays: it may bound less tightly than a new build, never wrongly). Analytic
 // shapes and lone triangles only: false, changing nothing, for a mesh instance or a
 // triangle that became degenerate (or stopped being), which need pack_scene. The indices
 // of the primitive and node records it changed are appended to the lists (for the upload).
+// The shape, material and light records are not touched: Renderer::update_geometry packs
+// those from the scene (update_values), so they go stale in `p`.
 bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>& prims, std::vector<int>& nodes);
 
 // Only the shape, material and light records (no BVH, primitives or vertices): what an

@@ -20,14 +20,13 @@ enum Unit {
 
 // The sizes were checked against limits_ in set_scene, before any state changed (uv
 // records take 2 texels per shape where shape records take 4: covered by the shapes' check).
-// The shape a light record names.
-int light_shape(const RecordBuffer& lights, int i) {
-  const Field& f = light_rec::shape;
-  return int(lights.raw()[(size_t(i) * size_t(light_rec::kTexels) + size_t(f.texel)) * 4 + size_t(f.comp)]);
+Texture upload(const RecordBuffer& b) {
+  const std::vector<float> t = b.texels();
+  return Texture(kDataWidth, b.rows(), GL_RGBA32F, t.data());
 }
 
 // The rows of a record texture that hold the given records, from the buffer again.
-void upload_rows(Texture& t, const RecordBuffer& b, std::vector<int> recs) {
+void upload_rows(Texture& t, const RecordBuffer& b, const std::vector<int>& recs) {
   std::vector<int> rows;
   for (int r : recs) rows.push_back(r * b.texels_per_record() / kDataWidth);
   std::sort(rows.begin(), rows.end());
@@ -40,11 +39,6 @@ void upload_rows(Texture& t, const RecordBuffer& b, std::vector<int> recs) {
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, r, kDataWidth, 1, GL_RGBA, GL_FLOAT, row.data());
   }
   PT_GL_CHECK("glTexSubImage2D");
-}
-
-Texture upload(const RecordBuffer& b) {
-  const std::vector<float> t = b.texels();
-  return Texture(kDataWidth, b.rows(), GL_RGBA32F, t.data());
 }
 
 }  // namespace
@@ -169,7 +163,7 @@ void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* 
   num_shapes_ = p.shapes.count();
   num_prims_ = p.prims.count();
   light_shapes_.clear();
-  for (int i = 0; i < num_lights_; ++i) light_shapes_.push_back(light_shape(p.lights, i));
+  for (int i = 0; i < num_lights_; ++i) light_shapes_.push_back(int(p.lights.get(i, light_rec::shape)));
   num_unbounded_ = p.unbounded;
   num_nodes_ = p.nodes.count();
   motion_bound_ = p.motion_bound;
@@ -201,16 +195,14 @@ void Renderer::set_environment(const Environment& env) {
   update_sh();
 }
 
-bool Renderer::update_values(const Scene& scene) { return update_records(scene); }
-
 bool Renderer::update_geometry(const Scene& scene, const PackedScene& p, const std::vector<int>& prims, const std::vector<int>& nodes) {
-  if (p.prims.count() != num_prims_ || p.nodes.count() != num_nodes_ || !update_records(scene)) return false;
+  if (p.prims.count() != num_prims_ || p.nodes.count() != num_nodes_ || !update_values(scene)) return false;
   upload_rows(prim_tex_, p.prims, prims);
   upload_rows(node_tex_, p.nodes, nodes);
   return true;
 }
 
-bool Renderer::update_records(const Scene& scene) {
+bool Renderer::update_values(const Scene& scene) {
   const Features f = Features::of(scene);  // the program must stay the same
   if (!have_scene_ || f.shapes != features_.shapes || f.materials != features_.materials || f.lights != features_.lights ||
       f.env_map != features_.env_map || f.motion != features_.motion || scene.environment.map != env_.map)
@@ -219,7 +211,7 @@ bool Renderer::update_records(const Scene& scene) {
   if (p.lights.count() != num_lights_ || p.shapes.count() != num_shapes_) return false;
   // The same shapes must be lights, in the same order (each light record names its shape).
   for (int i = 0; i < num_lights_; ++i)
-    if (light_shape(p.lights, i) != light_shapes_[size_t(i)]) return false;
+    if (int(p.lights.get(i, light_rec::shape)) != light_shapes_[size_t(i)]) return false;
   shape_tex_ = upload(p.shapes);
   material_tex_ = upload(p.materials);
   light_tex_ = upload(p.lights);

@@ -142,7 +142,6 @@ class Renderer {
   void select_program();  // the cached (or newly built) program for features_ + settings_.mode
   void update_sh();       // the environment's SH coefficients, when the mode needs them
   void set_environment(const Environment& env);  // its textures (a new map only) and uniforms
-  bool update_records(const Scene& scene);       // update_values
   Features features_;
   bool have_scene_ = false;
   Environment env_;       // as last set (for the SH projection)

@@ -484,10 +484,5 @@ std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& pa
   return parts;
 }
 
-std::vector<GltfPart> load_gltf(const std::string& path, const GltfResolver& resolve) {
-  const auto bytes = read_file(path);
-  if (!bytes) throw InputError(path, 0, "cannot open the mesh file");
-  return parse_gltf(*bytes, path, resolve);
-}
 
 }  // namespace pt

@@ -49,7 +49,6 @@ using GltfResolver = std::function<std::string(const std::string& path)>;
 
 // Throw InputError naming the file and where in it: "file.gltf:12:" (JSON syntax),
 // "file.glb: byte 20:" (GLB structure) or "file.gltf: /accessors/3:" (a JSON pointer).
-std::vector<GltfPart> load_gltf(const std::string& path, const GltfResolver& resolve);
 // From memory; binary glTF is told from JSON by its magic ("glTF"), not by the name.
 std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve);
 // The same, resumable (core/resumable.h; a unit is an element of an accessor). tinygltf's

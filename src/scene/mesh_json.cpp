@@ -5,7 +5,6 @@
 #include <map>
 
 #include "core/error.h"
-#include "core/file_io.h"
 
 namespace pt {
 namespace {
@@ -134,10 +133,5 @@ MeshData parse_mesh_json(const std::string& text, const std::string& path) {
   return m;
 }
 
-MeshData load_mesh_json(const std::string& path) {
-  const auto text = read_file(path);
-  if (!text) throw InputError(path, 0, "cannot open the mesh file");
-  return parse_mesh_json(*text, path);
-}
 
 }  // namespace pt

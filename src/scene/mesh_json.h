@@ -10,6 +10,5 @@
 namespace pt {
 
 MeshData parse_mesh_json(const std::string& text, const std::string& path);
-MeshData load_mesh_json(const std::string& path);  // throws InputError
 
 }  // namespace pt

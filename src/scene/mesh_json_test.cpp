@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/error.h"
+#include "core/file_io.h"
 #include "gl_context.h"
 #include "scene/mesh_json.h"
 #include "scene/mesh_obj.h"
@@ -49,7 +50,7 @@ TEST_CASE("the reference cube.json loads through <Mesh>", "[loader][mesh]") {
       CHECK(s.meshes.at(size_t(sh.mesh))->triangles.size() == 12);
     }
   CHECK(meshes == 1);
-  const MeshData m = load_mesh_json(repo_path("scenes/reference/cube.json"));
+  const MeshData m = parse_mesh_json(*read_file(repo_path("scenes/reference/cube.json")), "cube.json");
   CHECK(m.positions.size() == 28);
   CHECK(m.normals.size() == 28);
   CHECK(m.uvs.size() == 28);
@@ -85,7 +86,7 @@ TEST_CASE("a Wavefront OBJ mesh loads (quads triangulated); bad ones name the fi
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/bad.obj") << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
   try {
-    load_mesh_obj(dir + "/bad.obj");
+    parse_mesh_obj(*read_file(dir + "/bad.obj"), dir + "/bad.obj");
     FAIL("loaded");
   } catch (const InputError& e) {
     INFO(e.what());

@@ -12,7 +12,6 @@
 #include "scene/tinyobj.h"
 
 #include "core/error.h"
-#include "core/file_io.h"
 
 namespace pt {
 namespace {
@@ -294,10 +293,5 @@ MeshData parse_mesh_obj(const std::string& text, const std::string& path) {
   return m;
 }
 
-MeshData load_mesh_obj(const std::string& path) {
-  const auto text = read_file(path);
-  if (!text) throw InputError(path, 0, "cannot open the mesh file");
-  return parse_mesh_obj(*text, path);
-}
 
 }  // namespace pt

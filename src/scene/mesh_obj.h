@@ -11,7 +11,6 @@
 
 namespace pt {
 
-MeshData load_mesh_obj(const std::string& path);  // throws InputError naming the file
 MeshData parse_mesh_obj(const std::string& text, const std::string& path);  // reads no other file
 // The same, resumable (core/resumable.h; a unit is about a byte of text). `out` must
 // outlive it.

@@ -652,7 +652,6 @@ static void reject_text(const tinyxml2::XMLNode* n, const std::string& path) {
 }
 
 struct SceneLoad::State {
-  std::string path;
   tinyxml2::XMLDocument doc;
   Loader loader;
   std::vector<MeshSource> sources;  // in the order of the document, each key once
@@ -680,7 +679,6 @@ SceneLoad::SceneLoad(const std::string& text, const std::string& path, bool allo
     throw InputError(path, std::max(1, doc.ErrorLineNum()), "malformed XML: " + why);
   }
   reject_text(&doc, path);
-  s_->path = path;
   Loader& l = s_->loader;
   l.allow_files = allow_files;
   l.file = path;
