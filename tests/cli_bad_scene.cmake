@@ -1,5 +1,5 @@
 file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/broken.xml" "<SceneLevel>\n<Camera position=\"0 0 0\"/>\n<Objects>\n<Sphere center=\"0 0\" radius=\"1\"><Diffuse/></Sphere>\n</Objects></SceneLevel>\n")
-execute_process(COMMAND "${BIN}" render "${CMAKE_CURRENT_BINARY_DIR}/broken.xml" --out /tmp/never.png
+execute_process(COMMAND ${LAUNCH} "${BIN}" render "${CMAKE_CURRENT_BINARY_DIR}/broken.xml" --out /tmp/never.png
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 1)
   message(FATAL_ERROR "expected exit 1, got ${rc}")
@@ -7,7 +7,7 @@ endif()
 if(NOT err MATCHES "^pathtracer: [^\n]*broken.xml:4: <Sphere>: attribute 'center' needs 3 finite numbers: \"0 0\"\n$")
   message(FATAL_ERROR "unexpected message: ${err}")
 endif()
-execute_process(COMMAND "${BIN}" render "${CMAKE_CURRENT_BINARY_DIR}/missing.xml" RESULT_VARIABLE rc ERROR_VARIABLE err)
+execute_process(COMMAND ${LAUNCH} "${BIN}" render "${CMAKE_CURRENT_BINARY_DIR}/missing.xml" RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 1 OR NOT err MATCHES "missing.xml: cannot open the scene file")
   message(FATAL_ERROR "missing file: rc=${rc} ${err}")
 endif()

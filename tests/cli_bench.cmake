@@ -2,7 +2,7 @@
 # the error falls; plot turns it into an SVG.
 file(MAKE_DIRECTORY "${OUT}")
 file(REMOVE "${OUT}/room.csv" "${OUT}/room.svg")
-execute_process(COMMAND "${BIN}" bench "${SRC}/scenes/analytic/closed-room.xml" --size 16x16 --seconds 1 --bounces 64
+execute_process(COMMAND ${LAUNCH} "${BIN}" bench "${SRC}/scenes/analytic/closed-room.xml" --size 16x16 --seconds 1 --bounces 64
   --reference-value 2 --csv "${OUT}/room.csv" --label room RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0 OR NOT out MATCHES "spp/s, [0-9.]+ Mrays/s; relMSE")
   message(FATAL_ERROR "bench failed (${rc}): ${out} ${err}")
@@ -22,14 +22,14 @@ list(GET last 3 e1)
 if(NOT spp0 EQUAL 1 OR NOT e1 LESS e0)
   message(FATAL_ERROR "error did not fall: ${spp0} ${e0} -> ${e1}")
 endif()
-execute_process(COMMAND "${BIN}" plot "${OUT}/room.svg" "${OUT}/room.csv" RESULT_VARIABLE rc)
+execute_process(COMMAND ${LAUNCH} "${BIN}" plot "${OUT}/room.svg" "${OUT}/room.csv" RESULT_VARIABLE rc)
 file(READ "${OUT}/room.svg" svg LIMIT 4)
 if(NOT rc EQUAL 0 OR NOT "${svg}" MATCHES "^<svg")
   message(FATAL_ERROR "plot failed: rc=${rc} head=${svg}")
 endif()
 # slices: the page's loading path natively, each stage with its slices (the glTF scene's
 # meshes are read in several slices of 1024 units, its BVH built in several).
-execute_process(COMMAND "${BIN}" slices "${SRC}/scenes/gltf-instances.xml" 1024 RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+execute_process(COMMAND ${LAUNCH} "${BIN}" slices "${SRC}/scenes/gltf-instances.xml" 1024 RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 if(NOT rc EQUAL 0 OR NOT out MATCHES "reading torus-instances.gltf +[0-9.]+ ms in +[0-9]+ slices" OR NOT out MATCHES "building the BVH")
   message(FATAL_ERROR "slices failed: rc=${rc}\n${out}")
 endif()

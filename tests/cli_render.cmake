@@ -1,7 +1,7 @@
 file(MAKE_DIRECTORY "${OUT}")
 foreach(ext png hdr pfm)
   file(REMOVE "${OUT}/scene0.${ext}")
-  execute_process(COMMAND "${BIN}" render "${SRC}/scenes/reference/scene0.xml" --spp 2 --size 32x24 --out "${OUT}/scene0.${ext}"
+  execute_process(COMMAND ${LAUNCH} "${BIN}" render "${SRC}/scenes/reference/scene0.xml" --spp 2 --size 32x24 --out "${OUT}/scene0.${ext}"
     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0 OR NOT EXISTS "${OUT}/scene0.${ext}")
     message(FATAL_ERROR "render to ${ext} failed (${rc}): ${out} ${err}")
@@ -25,12 +25,12 @@ endif()
 file(WRITE "${OUT}/render-settings.xml" "<SceneLevel><Camera position=\"0 1 5\"/>
 <Render bounces=\"4\" mode=\"whitted\" samples=\"3\"/>
 <Objects><Sphere center=\"0 1 0\" radius=\"1\"><Reflect/></Sphere></Objects></SceneLevel>")
-execute_process(COMMAND "${BIN}" render "${OUT}/render-settings.xml" --size 16x16 --out "${OUT}/rs.png"
+execute_process(COMMAND ${LAUNCH} "${BIN}" render "${OUT}/render-settings.xml" --size 16x16 --out "${OUT}/rs.png"
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0 OR NOT out MATCHES "mode: whitted" OR NOT out MATCHES "rendered 3 spp at 16x16, 4 bounces")
   message(FATAL_ERROR "<Render> not applied (${rc}): ${out} ${err}")
 endif()
-execute_process(COMMAND "${BIN}" render "${OUT}/render-settings.xml" --size 16x16 --spp 5 --mode path --bounces 7 --out "${OUT}/rs.png"
+execute_process(COMMAND ${LAUNCH} "${BIN}" render "${OUT}/render-settings.xml" --size 16x16 --spp 5 --mode path --bounces 7 --out "${OUT}/rs.png"
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0 OR NOT out MATCHES "mode: path" OR NOT out MATCHES "rendered 5 spp at 16x16, 7 bounces")
   message(FATAL_ERROR "flags did not win over <Render> (${rc}): ${out} ${err}")

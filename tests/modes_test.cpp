@@ -11,6 +11,7 @@
 
 #include "gl_context.h"
 #include "render/camera.h"
+#include "render/scene_render.h"
 #include "render/sh.h"
 #include "scene_builders.h"
 
@@ -260,4 +261,25 @@ TEST_CASE("render modes: one program per mode, holding only what the mode needs"
   r.set_settings(st);
   CHECK(r.integrator_source().text == path);  // back to the cached program
   CHECK(r.programs_compiled() == 3);
+}
+
+TEST_CASE("a scene's <Render> sets each setting the user did not set explicitly", "[modes]") {
+  SceneRender r;
+  r.bounces = 3;
+  r.mode = RenderMode::Whitted;
+  r.tonemap = ToneMap::Reinhard;
+  r.exposure = 2.5f;
+  r.samples = 0;
+  const RenderSettings base;
+  const RenderSettings scene = with_scene_render(base, r, UserSet{});
+  CHECK(scene.max_bounces == 3);
+  CHECK(scene.mode == RenderMode::Whitted);
+  CHECK(scene.tonemap == ToneMap::Reinhard);
+  CHECK(scene.exposure == 2.5f);
+  CHECK(scene.sample_limit == 0);
+  RenderSettings mine = base;
+  mine.sample_limit = 64;
+  const RenderSettings user = with_scene_render(mine, r, UserSet{true, true, true, true, true});
+  CHECK(user == mine);
+  CHECK(with_scene_render(base, SceneRender{}, UserSet{}) == base);  // an absent <Render> changes nothing
 }

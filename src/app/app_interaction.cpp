@@ -13,6 +13,7 @@
 #include <cstdio>
 #include "app/picking.h"
 #include "app/selection.h"
+#include "render/scene_render.h"
 
 namespace pt {
 
@@ -168,16 +169,12 @@ void App::apply_scene(Scene scene, const PackedScene& packed, StagedScene* stage
   }
   // The scene's <Render>, on every load and reload (an author's edit of it applies); on the
   // first scene, what the page's link set wins.
-  const SceneRender& h = scene.render;
   const bool first = loads_ == 0;
-  if (h.bounces && !(first && options_.bounces)) settings_.max_bounces = std::clamp(*h.bounces, 1, 16);
-  if (h.mode) settings_.mode = *h.mode;
-  if (h.tonemap && !(first && options_.tonemap)) settings_.tonemap = *h.tonemap;
-  if (h.exposure && !(first && options_.exposure)) {
-    settings_.exposure = *h.exposure;
-    auto_exposure_ = false;
-  }
-  if (h.samples && !(first && options_.sample_limit > 0)) settings_.sample_limit = *h.samples;
+  const UserSet user{first && options_.bounces.has_value(), false, first && options_.tonemap.has_value(),
+                     first && options_.exposure.has_value(), first && options_.sample_limit > 0};
+  settings_ = with_scene_render(settings_, scene.render, user);
+  settings_.max_bounces = std::clamp(settings_.max_bounces, 1, 16);  // the panel's range
+  if (scene.render.exposure && !user.exposure) auto_exposure_ = false;
   // A reload keeps the selection when the object is still there.
   if (selected_ >= int(scene.shapes.size()) || scene.path != scene_.path) selected_ = -1;
   scene_ = std::move(scene);

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "render/scene_render.h"
 #include "scene/env_map.h"
 #include "scene/xml_loader.h"
 
@@ -129,15 +130,14 @@ Options parse_options(int argc, char** argv, bool bench) {
 }
 
 RenderSettings settings_for(const Options& o, const Scene& scene) {
-  auto free = [&](const char* flag) { return std::find(o.given.begin(), o.given.end(), flag) == o.given.end(); };
+  auto given = [&](const char* flag) { return std::find(o.given.begin(), o.given.end(), flag) != o.given.end(); };
   RenderSettings s = o.settings;
-  const SceneRender& r = scene.render;
-  if (r.bounces && free("--bounces")) s.max_bounces = *r.bounces;
-  if (r.mode && free("--mode")) s.mode = *r.mode;
-  if (r.tonemap && free("--tonemap")) s.tonemap = *r.tonemap;
-  if (r.exposure && free("--exposure")) s.exposure = *r.exposure;
-  s.sample_limit = r.samples && *r.samples > 0 && free("--spp") ? *r.samples : o.spp;
-  return s;
+  s.sample_limit = o.spp;
+  // A command line render ends: a scene's "unlimited" (samples 0) keeps --spp's default.
+  const bool scene_unlimited = scene.render.samples && *scene.render.samples <= 0;
+  const UserSet user{given("--bounces"), given("--mode"), given("--tonemap"), given("--exposure"),
+                     given("--spp") || scene_unlimited};
+  return with_scene_render(s, scene.render, user);
 }
 
 Scene load_scene(const Options& o) {
