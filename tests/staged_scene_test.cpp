@@ -3,6 +3,7 @@
 // and the scene renders bit for bit as one uploaded at once.
 #include <catch2/catch.hpp>
 
+#include <memory>
 #include <vector>
 
 #include "gl_context.h"
@@ -110,6 +111,33 @@ TEST_CASE("an edit of values updates the records in place and renders as the edi
     if (s.light >= 0) dark.materials[size_t(s.material)].emission = glm::vec3(0.0f);
   CHECK_FALSE(r.update_values(dark));
   CHECK(render(r, 2) == edited);  // refused: nothing changed
+
+  // Another environment map (the page's environment choice): uploaded, not re-packed.
+  auto sky = [](float red, float green, float blue) {
+    auto m = std::make_shared<EnvImage>();
+    m->width = 16;
+    m->height = 8;
+    for (int y = 0; y < m->height; ++y)
+      for (int x = 0; x < m->width; ++x)
+        for (float v : {red * float(1 + x), green * float(1 + y), blue, 1.0f}) m->rgba.push_back(v);
+    return std::shared_ptr<const EnvImage>(m);
+  };
+  scene.environment.map = sky(0.05f, 0.1f, 0.4f);
+  r.set_scene(scene);
+  const std::vector<float> blue = render(r, 2);
+  const size_t with_map = r.programs_compiled();
+  scene.environment.map = sky(0.3f, 0.02f, 0.01f);
+  scene.environment.rotation = 90.0f;
+  REQUIRE(r.update_values(scene));
+  const std::vector<float> red = render(r, 2);
+  CHECK(red != blue);
+  CHECK(r.programs_compiled() == with_map);
+  Renderer fresh_map;
+  fresh_map.set_scene(scene);
+  CHECK(render(fresh_map, 2) == red);
+  scene.environment.map.reset();  // a map to a colour: another program, refused
+  CHECK_FALSE(r.update_values(scene));
+  CHECK(render(r, 2) == red);
 }
 
 // Moving objects in a scene with a mesh (the page's position and radius edits): the

@@ -121,6 +121,24 @@ write(bad + "no-such-image.gltf", json.dumps(g12, indent=1).encode() + b"\n")
 g13 = copy.deepcopy(g); del g13["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"]
 write(bad + "texture-without-uv.gltf", as_gltf(g13, buf))
 
+# The buffers parse_gltf_steps reads itself (the BIN chunk, buffer files), checked there.
+g14 = json.loads(glb[20:20 + struct.unpack_from("<I", glb, 12)[0]])
+g14["buffers"][0]["byteLength"] = len(pbuf) + 4  # more than the BIN chunk holds
+js = json.dumps(g14, separators=(",", ":")).encode(); js += b" " * (-len(js) % 4)
+write(bad + "bytelength-past-bin.glb", struct.pack("<III", 0x46546C67, 2, 28 + len(js) + len(pbuf)) +
+      struct.pack("<II", len(js), 0x4E4F534A) + js + struct.pack("<II", len(pbuf), 0x004E4942) + pbuf)
+g15 = json.loads(as_gltf(plain, pbuf)); g15["buffers"][0]["uri"] = "short-buffer-file.bin"
+write(bad + "short-buffer-file.gltf", json.dumps(g15, indent=1).encode() + b"\n")
+write(bad + "short-buffer-file.bin", pbuf[: len(pbuf) // 2])
+g16 = copy.deepcopy(g); g16["extras"] = {}
+t16 = bytearray(as_glb(g16, buf))  # the image's bufferView (the last) made to reach past the buffer
+j16 = json.loads(bytes(t16[20:20 + struct.unpack_from("<I", t16, 12)[0]]))
+j16["bufferViews"][-1]["byteLength"] += 64
+js = json.dumps(j16, separators=(",", ":")).encode(); js += b" " * (-len(js) % 4)
+binc = bytes(t16[20 + struct.unpack_from("<I", t16, 12)[0]:])
+write(bad + "image-view-past-buffer.glb", struct.pack("<III", 0x46546C67, 2, 20 + len(js) + len(binc)) +
+      struct.pack("<II", len(js), 0x4E4F534A) + js + binc)
+
 models = "assets/models/"
 write(models + "textured-quad.png", PNG)
 q = json.loads(as_gltf(g, buf, indent=None)); q["images"][0]["uri"] = "textured-quad.png"

@@ -23,11 +23,11 @@ namespace {
 
 constexpr float kMotionScale = 0.5f;       // of the render size, per axis, while the camera moves
 constexpr float kClickSlopPixels = 4.0f;   // a press and release closer than this is a click, not a drag
-// Scene preparation: each frame packs for about this long (the page adds slices between
-// frames), checking the clock every kPackWorkUnits units (about 0.1-0.5 ms).
+// Scene preparation: each frame reads and packs for about this long (the page adds slices
+// between frames), checking the clock every kWorkUnits units of either (a unit is about a
+// triangle, a vertex, a BVH node or 64 bytes of a file: 0.1-0.5 ms).
 constexpr double kFrameWorkMs = 4.0;
-constexpr long kPackWorkUnits = 8192;
-constexpr long kReadWorkUnits = 8192;  // reading meshes: about a triangle, vertex or byte each
+constexpr long kWorkUnits = 8192;
 constexpr int kUploadRows = 8;  // rows of record texels per upload call (512 KB)
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -64,7 +64,7 @@ bool App::work(double budget_ms) {
   try {
     if (l.read) {
       bool done = false;
-      while (!(done = l.read->run(kReadWorkUnits)) && ms_since(t0) < budget_ms) {
+      while (!(done = l.read->run(kWorkUnits)) && ms_since(t0) < budget_ms) {
       }
       const double ms = ms_since(t0);
       l.read_ms += ms;
@@ -78,7 +78,7 @@ bool App::work(double budget_ms) {
       }
     } else if (!l.packed) {
       bool done = false;
-      while (!(done = l.pack->run(kPackWorkUnits)) && ms_since(t0) < budget_ms) {
+      while (!(done = l.pack->run(kWorkUnits)) && ms_since(t0) < budget_ms) {
       }
       if (done) l.packed = l.pack->take();
       const double ms = ms_since(t0);

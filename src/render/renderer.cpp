@@ -205,8 +205,11 @@ bool Renderer::update_geometry(const Scene& scene, const PackedScene& p, const s
 bool Renderer::update_values(const Scene& scene) {
   const Features f = Features::of(scene);  // the program must stay the same
   if (!have_scene_ || f.shapes != features_.shapes || f.materials != features_.materials || f.lights != features_.lights ||
-      f.env_map != features_.env_map || f.motion != features_.motion || scene.environment.map != env_.map)
+      f.env_map != features_.env_map || f.motion != features_.motion)
     return false;
+  // Another environment map is an upload of it (set_environment), when it fits this GPU;
+  // else set_scene says why.
+  if (const auto& m = scene.environment.map; m && std::max(m->width, m->height) + 1 > limits_.max_texture_size) return false;
   PackedScene p = pack_values(scene);
   if (p.lights.count() != num_lights_ || p.shapes.count() != num_shapes_) return false;
   // The same shapes must be lights, in the same order (each light record names its shape).

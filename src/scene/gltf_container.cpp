@@ -66,6 +66,13 @@ GltfJson gltf_json(const std::string& bytes, const std::string& path) {
   if (j.binary) std::memcpy(&chunk, bytes.data() + 12, 4);
   j.size = j.binary ? size_t(chunk) : bytes.size();
   j.text = bytes.data() + j.offset;
+  if (j.binary && 20 + j.size < bytes.size()) {  // check_glb_structure checked the BIN chunk's header
+    uint32_t bin = 0;
+    std::memcpy(&bin, bytes.data() + 20 + j.size, 4);
+    j.has_bin = true;
+    j.bin_offset = 20 + j.size + 8;
+    j.bin_size = bin;
+  }
   check_json_depth(j.text, j.size, [&](size_t at, const std::string& what) {
     if (j.binary) throw InputError(path, 0, "byte " + std::to_string(j.offset + at) + ": " + what);
     throw InputError(path, 1 + int(std::count(j.text, j.text + at, '\n')), what);

@@ -15,6 +15,9 @@ struct GltfJson {
   const char* text = nullptr;
   size_t size = 0;
   size_t offset = 0;  // of the text in the file
+  // A binary glTF's BIN chunk, when it has one: its data's offset in the file and size.
+  bool has_bin = false;
+  size_t bin_offset = 0, bin_size = 0;
 };
 GltfJson gltf_json(const std::string& bytes, const std::string& path);
 

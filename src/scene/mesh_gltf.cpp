@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -51,24 +53,31 @@ std::string pointer(const char* array, size_t index) { return std::string("/") +
 bool file_exists(const std::string&, void*) { return true; }
 std::string expand_path(const std::string& p, void*) { return p; }
 bool write_file(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
-// A file named by a URI (tinygltf has URL-decoded a buffer's; an image's is decoded
-// here), through the resolver; false with *why when refused or unreadable.
-bool read_referenced(const Context& c, const std::string& uri, const char* kind, std::string* out, std::string* why) {
+// The file a URI names (tinygltf has URL-decoded a buffer's; an image's is decoded
+// here), through the resolver: its path, or nullopt with *why when refused.
+std::optional<std::string> resolve_referenced(const Context& c, const std::string& uri, std::string* why) {
   const std::string rel = !uri.empty() && uri[0] == '/' ? uri : directory_of(c.path) + "/" + uri;
   if (!c.resolve || !*c.resolve) {
     *why = "file references are disabled for this glTF";
-    return false;
+    return std::nullopt;
   }
   try {
-    const std::string file = (*c.resolve)(rel);
-    if (auto bytes = read_file(file)) {
-      *out = std::move(*bytes);
-      return true;
-    }
-    *why = std::string("cannot open the ") + kind + " file " + file;
+    return (*c.resolve)(rel);
   } catch (const InputError& e) {
     *why = e.what();
   }
+  return std::nullopt;
+}
+
+// The same file's bytes; false with *why when refused or unreadable.
+bool read_referenced(const Context& c, const std::string& uri, const char* kind, std::string* out, std::string* why) {
+  const std::optional<std::string> file = resolve_referenced(c, uri, why);
+  if (!file) return false;
+  if (auto bytes = read_file(*file)) {
+    *out = std::move(*bytes);
+    return true;
+  }
+  *why = std::string("cannot open the ") + kind + " file " + *file;
   return false;
 }
 
@@ -87,30 +96,27 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
 }
 
 // Images: their bytes are kept, undecoded (image.as_is), and decoded by our own image
-// reader when a material uses them. tinygltf 2.7 hands over an image's bufferView
-// without checking it against its buffer: that is checked here, before reading.
-bool keep_image(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int, const unsigned char* bytes,
-                int size, void* user) {
-  auto& c = *static_cast<Context*>(user);
-  if (image->bufferView >= 0) {
-    const tinygltf::Model& m = *c.model;
-    const auto& v = m.bufferViews[size_t(image->bufferView)];  // tinygltf checked both indices
-    const size_t have = m.buffers[size_t(v.buffer)].data.size();
-    if (v.byteOffset > have || v.byteLength > have - v.byteOffset) {
-      c.error = pointer("images", size_t(index)) + ": its bufferView runs past its buffer";
-      *err = "refused";
-      return false;
-    }
-  }
+// reader when a material uses them. An image in a bufferView is read then too, from the
+// buffers as the conversion has them (Reader::view; tinygltf may not hold the bytes).
+bool keep_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes, int size, void*) {
+  image->as_is = true;
+  if (image->bufferView >= 0) return true;
   if (size < 0 || (size > 0 && !bytes)) return false;
   image->image.assign(bytes, bytes + size);
-  image->as_is = true;
   return true;
 }
 
+// A buffer's bytes as the conversion reads them.
+struct Bytes {
+  const unsigned char* data = nullptr;
+  size_t size = 0;
+};
+
 class Reader {
  public:
-  Reader(const std::string& path, const tinygltf::Model& m) : path_(path), m_(m) {}
+  // `buffers`: each buffer of the model, as read (a BIN chunk, a file or a data: URI).
+  Reader(const std::string& path, const tinygltf::Model& m, std::vector<Bytes> buffers)
+      : path_(path), m_(m), buffers_(std::move(buffers)) {}
 
   // `where` is a JSON pointer into the file ("/accessors/3"): glTF has no line numbers
   // once parsed.
@@ -119,18 +125,22 @@ class Reader {
   // An accessor's elements as floats (normalised integers mapped to [0, 1]), with every
   // offset and size checked against its buffer.
   // Resumable (a unit: one element); `out` must outlive it.
-  Resumable floats(int index, int want_components, std::string user, std::vector<float>& out) const {
+  // T: glm::vec2 or glm::vec3, the accessor's type (VEC2, VEC3); read into `out` directly.
+  template <typename T>
+  Resumable floats(int index, std::string user, std::vector<T>& out) const {
+    constexpr int want_components = T::length();
     const tinygltf::Accessor& a = accessor(index, user);
     const std::string at = pointer("accessors", size_t(index));
     const int comps = tinygltf::GetNumComponentsInType(uint32_t(a.type));
     if (comps != want_components) fail(at, "expected " + std::to_string(want_components) + " components (used by " + user + ")");
     const unsigned char* base = checked(a, at);
     out.clear();  // filled in the loop: touching a large array in one step is slow
-    out.reserve(a.count * size_t(comps));
+    out.reserve(a.count);
     const size_t stride = stride_of(a);
     for (size_t i = 0; i < a.count; ++i) {
       const unsigned char* p = base + i * stride;
-      for (int c = 0; c < comps; ++c) {
+      T e;
+      for (int c = 0; c < want_components; ++c) {
         float v = 0.0f;
         switch (a.componentType) {
           case TINYGLTF_COMPONENT_TYPE_FLOAT: std::memcpy(&v, p + 4 * c, 4); break;
@@ -144,8 +154,9 @@ class Reader {
           default: fail(at, "unsupported component type " + std::to_string(a.componentType) + " (used by " + user + ")");
         }
         if (!std::isfinite(v)) fail(at, "element " + std::to_string(i) + " is not finite");
-        out.push_back(v);
+        e[c] = v;
       }
+      out.push_back(e);
       if (i % kStep == kStep - 1) co_await Work{kStep};
     }
   }
@@ -207,21 +218,34 @@ class Reader {
   const unsigned char* checked(const tinygltf::Accessor& a, const std::string& at) const {
     const tinygltf::BufferView& v = m_.bufferViews[size_t(a.bufferView)];
     if (v.buffer < 0 || size_t(v.buffer) >= m_.buffers.size()) fail(pointer("bufferViews", size_t(a.bufferView)), "no buffer " + std::to_string(v.buffer));
-    const std::vector<unsigned char>& b = m_.buffers[size_t(v.buffer)].data;
+    const Bytes b = buffers_[size_t(v.buffer)];
     const size_t elem = elem_of(a, at);
     const size_t stride = stride_of(a);
-    if (v.byteOffset > b.size() || v.byteLength > b.size() - v.byteOffset)
-      fail(pointer("bufferViews", size_t(a.bufferView)), "runs past its buffer (" + std::to_string(b.size()) + " bytes)");
+    if (v.byteOffset > b.size || v.byteLength > b.size - v.byteOffset)
+      fail(pointer("bufferViews", size_t(a.bufferView)), "runs past its buffer (" + std::to_string(b.size) + " bytes)");
     if (stride < elem) fail(at, "elements overlap (byteStride " + std::to_string(stride) + " < " + std::to_string(elem) + ")");
     if (a.count == 0) return nullptr;
     if (a.byteOffset > v.byteLength || elem > v.byteLength - a.byteOffset ||
         (a.count - 1) > (v.byteLength - a.byteOffset - elem) / stride)
       fail(at, std::to_string(a.count) + " elements run past the end of bufferView " + std::to_string(a.bufferView));
-    return b.data() + v.byteOffset + a.byteOffset;
+    return b.data + v.byteOffset + a.byteOffset;
   }
 
+ public:
+  // An image's bufferView's bytes, checked against its buffer (`where`: the image).
+  std::string view(int index, const std::string& where) const {
+    if (index < 0 || size_t(index) >= m_.bufferViews.size()) fail(where, "no bufferView " + std::to_string(index));
+    const tinygltf::BufferView& v = m_.bufferViews[size_t(index)];
+    if (v.buffer < 0 || size_t(v.buffer) >= buffers_.size()) fail(pointer("bufferViews", size_t(index)), "no buffer " + std::to_string(v.buffer));
+    const Bytes b = buffers_[size_t(v.buffer)];
+    if (v.byteOffset > b.size || v.byteLength > b.size - v.byteOffset) fail(where, "its bufferView runs past its buffer");
+    return std::string(reinterpret_cast<const char*>(b.data) + v.byteOffset, v.byteLength);
+  }
+
+ private:
   std::string path_;
   const tinygltf::Model& m_;
+  std::vector<Bytes> buffers_;
 };
 
 glm::mat4 node_matrix(const tinygltf::Node& n) {
@@ -304,8 +328,10 @@ class Materials {
     const std::string where = pointer("images", size_t(source));
     const tinygltf::Image& img = m_.images[size_t(source)];
     std::string bytes, why;
-    if (img.as_is) {
-      bytes.assign(img.image.begin(), img.image.end());  // embedded: a data: URI or a bufferView
+    if (img.bufferView >= 0) {
+      bytes = r_.view(img.bufferView, where);
+    } else if (img.as_is) {
+      bytes.assign(img.image.begin(), img.image.end());  // embedded: a data: URI
     } else if (img.uri.empty()) {
       r_.fail(where, "no image data");
     } else if (!read_referenced(c_, tinygltf::dlib::urldecode(img.uri), "image", &bytes, &why)) {
@@ -337,26 +363,106 @@ const char* mode_name(int mode) {
   }
 }
 
+// A buffer we read ourselves (parse_gltf_steps): stored in the GLB's BIN chunk, or in a
+// file named by its (URL-decoded) uri.
+struct OwnBuffer {
+  size_t index = 0;
+  bool bin_chunk = false;
+  std::string uri;
+  size_t length = 0;  // byteLength
+};
+
+// The buffers of the JSON that are ours to read, and in *rewritten the JSON for tinygltf
+// with each of them replaced by a 1-byte data: URI (left empty when there are none).
+// Anything unusual (no byteLength, a data: URI, a buffer without uri in a .gltf, JSON
+// that does not parse) is left to tinygltf, which reports it as before.
+std::vector<OwnBuffer> own_buffers(const GltfJson& json, const std::string& path, std::string* rewritten) {
+  std::vector<OwnBuffer> out;
+  nlohmann::json doc = nlohmann::json::parse(json.text, json.text + json.size, nullptr, false);
+  if (!doc.is_object() || !doc.contains("buffers") || !doc["buffers"].is_array()) return out;
+  nlohmann::json& buffers = doc["buffers"];
+  for (size_t i = 0; i < buffers.size(); ++i) {
+    nlohmann::json& b = buffers[i];
+    if (!b.is_object() || !b.contains("byteLength") || !b["byteLength"].is_number_unsigned()) continue;
+    OwnBuffer o;
+    o.index = i;
+    o.length = b["byteLength"].get<size_t>();
+    if (!b.contains("uri")) {
+      if (!json.binary) continue;
+      const std::string at = pointer("buffers", i);
+      if (!json.has_bin) throw InputError(path, 0, at + ": no uri, and the file has no BIN chunk");
+      if (o.length > json.bin_size)
+        throw InputError(path, 0, at + ": byteLength " + std::to_string(o.length) + " is more than the BIN chunk's " +
+                                      std::to_string(json.bin_size) + " bytes");
+      o.bin_chunk = true;
+    } else {
+      if (!b["uri"].is_string()) continue;
+      const std::string uri = b["uri"].get<std::string>();
+      if (uri.rfind("data:", 0) == 0) continue;
+      o.uri = tinygltf::dlib::urldecode(uri);
+    }
+    b["uri"] = "data:application/octet-stream;base64,AA==";
+    b["byteLength"] = 1;
+    out.push_back(std::move(o));
+  }
+  if (!out.empty()) *rewritten = doc.dump();
+  return out;
+}
+
 }  // namespace
 
 Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver resolve, std::vector<GltfPart>& parts) {
   parts.clear();
   const GltfJson json = gltf_json(bytes, path);
-  tinygltf::Model model;
   Context ctx;
   ctx.path = path;
   ctx.resolve = &resolve;
+  // Buffers are ours: tinygltf would copy a GLB's BIN chunk (tens of MB, in one step) and
+  // read a buffer file in one step. Each buffer stored in the BIN chunk or in a file is
+  // read here instead (a file in slices; the chunk is used where it lies in `bytes`), and
+  // tinygltf is given the JSON with that buffer replaced by a 1-byte data: URI. Buffers
+  // that are data: URIs stay tinygltf's to decode (one step).
+  std::string text;  // the JSON tinygltf parses, when rewritten
+  const std::vector<OwnBuffer> ours = own_buffers(json, path, &text);
+  std::vector<std::optional<Bytes>> own;
+  std::deque<std::string> files;  // the buffer files read (a deque: growing moves none)
+  for (const OwnBuffer& o : ours) {
+    if (own.size() <= o.index) own.resize(o.index + 1);
+    const std::string at = pointer("buffers", o.index);
+    if (o.bin_chunk) {
+      own[o.index] = Bytes{reinterpret_cast<const unsigned char*>(bytes.data()) + json.bin_offset, o.length};
+      continue;
+    }
+    std::string why;
+    const std::optional<std::string> file = resolve_referenced(ctx, o.uri, &why);
+    if (!file) throw InputError(path, 0, at + ": " + why);
+    std::optional<std::string> read;
+    Resumable reading = read_file_steps(*file, read);
+    while (!co_await reading) {
+    }
+    if (!read) throw InputError(path, 0, at + ": cannot open the buffer file " + *file);
+    if (read->size() < o.length)
+      throw InputError(path, 0, at + ": the buffer file " + *file + " has " + std::to_string(read->size()) + " bytes, byteLength says " +
+                                    std::to_string(o.length));
+    files.push_back(std::move(*read));
+    own[o.index] = Bytes{reinterpret_cast<const unsigned char*>(files.back().data()), o.length};
+  }
+  tinygltf::Model model;
   ctx.model = &model;
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&keep_image, &ctx);
   loader.SetFsCallbacks({&file_exists, &expand_path, &read_whole_file, &write_file, &ctx});
   std::string err, warn;
-  const bool ok = json.binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                        unsigned(bytes.size()), "")
-                         : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), "");
+  const bool ok = !text.empty() ? loader.LoadASCIIFromString(&model, &err, &warn, text.data(), unsigned(text.size()), "")
+                  : json.binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                              unsigned(bytes.size()), "")
+                                : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), "");
   if (!ctx.error.empty()) throw InputError(path, 0, ctx.error);
   if (!ok) fail_gltf_parse(err, path, json);
-  const Reader r(path, model);
+  std::vector<Bytes> buffers;
+  for (size_t i = 0; i < model.buffers.size(); ++i)
+    buffers.push_back(i < own.size() && own[i] ? *own[i] : Bytes{model.buffers[i].data.data(), model.buffers[i].data.size()});
+  const Reader r(path, model, std::move(buffers));
   Materials materials(r, model, ctx);
   // Keyed by the accessors a primitive reads: primitives (or meshes) that differ only in
   // material share one MeshData.
@@ -382,31 +488,25 @@ Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver res
     auto d = std::make_shared<MeshData>();
     const auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) r.fail(at, "no POSITION attribute");
-    std::vector<float> v, f;
-    Resumable read = r.floats(pos->second, 3, at + "/attributes/POSITION", v);
+    Resumable read = r.floats(pos->second, at + "/attributes/POSITION", d->positions);
     while (!co_await read) {
     }
-    d->positions.reserve(v.size() / 3);
-    for (size_t i = 0; i + 2 < v.size(); i += 3) d->positions.emplace_back(v[i], v[i + 1], v[i + 2]);
-    co_await Work{long(v.size() / 3)};
     if (auto n = p.attributes.find("NORMAL"); n != p.attributes.end()) {
-      read = r.floats(n->second, 3, at + "/attributes/NORMAL", f);
+      read = r.floats(n->second, at + "/attributes/NORMAL", d->normals);
       while (!co_await read) {
       }
-      if (f.size() != v.size()) r.fail(at, "NORMAL and POSITION counts differ");
-      d->normals.reserve(f.size() / 3);
-      for (size_t i = 0; i + 2 < f.size(); i += 3) d->normals.emplace_back(f[i], f[i + 1], f[i + 2]);
-      co_await Work{long(f.size() / 3)};
+      if (d->normals.size() != d->positions.size()) r.fail(at, "NORMAL and POSITION counts differ");
     }
     if (auto t = p.attributes.find("TEXCOORD_0"); t != p.attributes.end()) {
-      read = r.floats(t->second, 2, at + "/attributes/TEXCOORD_0", f);
+      read = r.floats(t->second, at + "/attributes/TEXCOORD_0", d->uvs);
       while (!co_await read) {
       }
-      if (f.size() / 2 != d->positions.size()) r.fail(at, "TEXCOORD_0 and POSITION counts differ");
+      if (d->uvs.size() != d->positions.size()) r.fail(at, "TEXCOORD_0 and POSITION counts differ");
       // glTF's v runs down from the image's top row, ours up from its bottom row.
-      d->uvs.reserve(f.size() / 2);
-      for (size_t i = 0; i + 1 < f.size(); i += 2) d->uvs.emplace_back(f[i], 1.0f - f[i + 1]);
-      co_await Work{long(f.size() / 2)};
+      for (size_t i = 0; i < d->uvs.size(); ++i) {
+        d->uvs[i].y = 1.0f - d->uvs[i].y;
+        if (i % kStep == kStep - 1) co_await Work{kStep};
+      }
     }
     std::vector<uint32_t> idx;
     if (p.indices >= 0) {
@@ -414,8 +514,11 @@ Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver res
       while (!co_await read) {
       }
     } else {
-      idx.resize(d->positions.size());
-      for (size_t i = 0; i < idx.size(); ++i) idx[i] = uint32_t(i);
+      idx.reserve(d->positions.size());
+      for (size_t i = 0; i < d->positions.size(); ++i) {
+        idx.push_back(uint32_t(i));
+        if (i % kStep == kStep - 1) co_await Work{kStep};
+      }
     }
     if (idx.size() % 3 != 0) r.fail(at, std::to_string(idx.size()) + " indices are not whole triangles");
     d->triangles.reserve(idx.size() / 3);

@@ -51,9 +51,10 @@ using GltfResolver = std::function<std::string(const std::string& path)>;
 // "file.glb: byte 20:" (GLB structure) or "file.gltf: /accessors/3:" (a JSON pointer).
 // From memory; binary glTF is told from JSON by its magic ("glTF"), not by the name.
 std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve);
-// The same, resumable (core/resumable.h; a unit is an element of an accessor). tinygltf's
-// own parse (JSON, base64 data: URIs, buffers) is one step; the conversion of the
-// accessors is sliced. `parts` must outlive it.
+// The same, resumable (core/resumable.h; a unit is an element of an accessor, or 1/4096
+// of 256 KB of a buffer file). Buffer files are read in slices and a GLB's BIN chunk is
+// read where it lies (tinygltf is given neither); what stays one step is tinygltf's parse
+// of the JSON and its decoding of base64 data: URIs. `parts` must outlive it.
 Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver resolve, std::vector<GltfPart>& parts);
 
 }  // namespace pt

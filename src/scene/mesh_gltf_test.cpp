@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/resumable.h"
 #include "scene/mesh_gltf.h"
 #include "scene/xml_loader.h"
 #include "test_paths.h"
@@ -92,6 +93,33 @@ TEST_CASE("glTF buffer files go through the resolver: refused without one, depen
   } catch (const InputError& e) {
     CHECK(std::string(e.what()).find("file references are disabled") != std::string::npos);
   }
+}
+
+TEST_CASE("glTF buffers are ours: a buffer file read 256 KB a slice, the GLB's BIN chunk used where it lies", "[loader][mesh][gltf]") {
+  // The quad as a .gltf naming big.bin (its geometry, then 1 MB that byteLength leaves
+  // out), and as quad.glb. tinygltf read a buffer file, and copied a BIN chunk, in one step.
+  const std::string dir = std::string(PT_BINARY_DIR) + "/gltf-test";
+  std::filesystem::create_directories(dir);
+  const std::string glb = bytes_of("tests/fuzz/corpus/mesh_gltf/quad.glb");
+  uint32_t json = 0, bin = 0;
+  std::memcpy(&json, glb.data() + 12, 4);
+  std::memcpy(&bin, glb.data() + 20 + json, 4);
+  std::ofstream(dir + "/big.bin", std::ios::binary) << glb.substr(20 + json + 8, bin) << std::string(size_t(1) << 20, '\0');
+  std::string text = bytes_of("tests/malformed/gltf/missing-buffer.gltf");
+  REQUIRE(text.find("no-such.bin") != std::string::npos);
+  text.replace(text.find("no-such.bin"), 11, "big.bin");
+  auto slices = [&](const std::string& bytes, const std::string& path) {
+    std::vector<GltfPart> parts;
+    Resumable r = parse_gltf_steps(bytes, path, [](const std::string& p) { return p; }, parts);
+    int n = 1;
+    while (!r.run(1)) ++n;  // one unit: every yield ends a slice
+    REQUIRE(parts.size() == 1);
+    CHECK(parts[0].mesh->triangles.size() == 2);
+    CHECK(parts[0].mesh->positions[2] == glm::vec3(1, 1, 0));
+    return n;
+  };
+  // The same conversion; the file's 1 MB + 140 bytes are 5 more slices of 256 KB.
+  CHECK(slices(text, dir + "/big.gltf") - slices(glb, dir + "/quad.glb") == 5);
 }
 
 TEST_CASE("glTF maps become <Textured>: base colour, normal, metalness as the specular weight", "[loader][mesh][gltf]") {

@@ -258,6 +258,7 @@ struct Loader {
   std::string file;
   Scene scene;
   std::map<std::string, MeshEntry> mesh_files;  // loaded once per path (or generator and parameters)
+  std::map<const MeshData*, std::pair<glm::vec3, glm::vec3>> mesh_boxes;  // each mesh's box, for its instances
 
   bool allow_files = true;  // false: any file reference is an error (fuzzing, untrusted text)
   int composite_depth = 0;  // FresnelComposites being parsed around the current element
@@ -433,8 +434,10 @@ struct Loader {
       };
       // The corners of the mesh's box bound every vertex (an affine map's extremes over a
       // box are at its corners): each vertex is looked at only when a corner is out.
-      glm::vec3 lo(INFINITY), hi(-INFINITY);
-      for (const glm::vec3& v : part.mesh->positions) lo = glm::min(lo, v), hi = glm::max(hi, v);
+      auto [box, fresh] = mesh_boxes.try_emplace(part.mesh.get(), glm::vec3(INFINITY), glm::vec3(-INFINITY));
+      if (fresh)  // once per mesh, not per instance
+        for (const glm::vec3& v : part.mesh->positions) box->second.first = glm::min(box->second.first, v), box->second.second = glm::max(box->second.second, v);
+      const glm::vec3 lo = box->second.first, hi = box->second.second;
       bool corners_within = true;
       for (int c = 0; c < 8; ++c) corners_within &= within(glm::vec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z));
       if (!corners_within)
