@@ -8,6 +8,7 @@
 
 #include "gl_context.h"
 #include "gpu/program.h"
+#include "render/packing.h"
 #include "render/renderer.h"
 #include "scene/xml_loader.h"
 #include "test_paths.h"
@@ -33,6 +34,28 @@ TEST_CASE("program_ready starts a build, polls it, and set_scene reuses it", "[g
   CHECK(r.samples() == 1);
   INFO("polls before the program was ready: " << polls);
   if (!Program::parallel_compile()) CHECK(polls == 0);  // no extension: ready at once (finish blocks)
+}
+
+// A page showing a scene whose <Render mode> differs from the current mode builds that
+// mode's program ahead (program_ready with the mode) and sets settings and scene at once:
+// no program of the old mode for the new scene is built on the way.
+TEST_CASE("a scene set with its own mode uses the program built ahead for that mode, and only it", "[gpu][compile]") {
+  test_gl();
+  const Scene first = load_scene_file(repo_path("scenes/analytic/closed-room.xml"));  // other kinds than scene2
+  const Scene next = load_scene_file(repo_path("scenes/reference/scene2.xml"));
+  Renderer r;
+  r.resize(8, 8);
+  r.set_scene(first);
+  REQUIRE(r.programs_compiled() == 1);
+  RenderSettings whitted;
+  whitted.mode = RenderMode::Whitted;
+  while (!r.program_ready(next, RenderMode::Whitted)) {
+  }
+  CHECK(r.programs_compiled() == 2);
+  r.set_scene(next, pack_scene(next), nullptr, &whitted);
+  CHECK(r.programs_compiled() == 2);  // the path tracer's program for `next` was never built
+  CHECK(r.settings().mode == RenderMode::Whitted);
+  CHECK(r.step() >= 0);
 }
 
 TEST_CASE("a started program that fails reports its log at finish", "[gpu][compile]") {

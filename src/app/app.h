@@ -97,7 +97,8 @@ class App {
   void present(int fb_w, int fb_h);
   void scan_scenes();
   // app_interaction.cpp: scene switching, picking and the selection panel, render size.
-  void start_loading(Scene scene, bool keep_camera);
+  // edit: the shown scene again (an edit, a lost context): the page's settings are kept.
+  void start_loading(Scene scene, bool keep_camera, bool edit = false);
   void apply_scene(Scene scene, const PackedScene& packed, StagedScene* staged, const std::optional<Camera>& camera);
   void poll_loading();
   void scene_edited(int moved_shape);  // after a panel changed scene_ (-1: no shape moved)
@@ -169,6 +170,10 @@ class App {
     double upload_ms = 0.0;
     int slices = 0;
   };
+  // The settings a loaded scene is shown with: the page's, and the scene's <Render> where
+  // the page's link did not set them (on the first scene), clamped to the panel's ranges.
+  RenderSettings shown_settings(const Scene& scene) const;
+  RenderMode mode_for(const Loading& l) const;  // the program mode of a scene on its way
   void begin_loading(Loading l);    // as loading_, replacing one in progress
   void start_packing(Loading& l);   // once l.scene is read
   void load_failed(std::string path, std::string why);

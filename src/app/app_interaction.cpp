@@ -36,9 +36,10 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-void App::start_loading(Scene scene, bool keep_camera) {
+void App::start_loading(Scene scene, bool keep_camera, bool edit) {
   Loading l;
   l.path = scene.path;
+  l.edit = edit;
   l.scene = std::make_unique<Scene>(std::move(scene));
   start_packing(l);
   l.keep_camera = keep_camera;
@@ -52,7 +53,7 @@ void App::begin_loading(Loading l) {
 }
 
 void App::start_packing(Loading& l) {
-  renderer_->program_ready(*l.scene);  // its program starts building alongside the packing
+  renderer_->program_ready(*l.scene, mode_for(l));  // its program starts building alongside the packing
   l.pack = std::make_unique<PackJob>(*l.scene);
 }
 
@@ -112,7 +113,7 @@ void App::load_failed(std::string path, std::string why) {  // copies: loading_ 
     const std::string fallback = AppOptions{}.scene;
     if (path != fallback && load_scene(fallback)) error_ = why;
   } else if (!shown_) {
-    start_loading(scene_, true);  // after a lost context: the kept scene again
+    start_loading(scene_, true, true);  // after a lost context: the kept scene again
   }
 }
 
@@ -121,7 +122,7 @@ void App::poll_loading() {
   if (!loading_) return;
   const std::string path = loading_->path;
   try {
-    if (preparing() || !renderer_->program_ready(*loading_->scene)) return;
+    if (preparing() || !renderer_->program_ready(*loading_->scene, mode_for(*loading_))) return;
     Loading l = std::move(*loading_);
     loading_.reset();
     std::optional<Camera> camera;
@@ -152,8 +153,22 @@ void App::poll_loading() {
   }
 }
 
+RenderSettings App::shown_settings(const Scene& scene) const {
+  const bool first = loads_ == 0;  // what the page's link set wins on the first scene only
+  const UserSet user{first && options_.bounces.has_value(), false, first && options_.tonemap.has_value(),
+                     first && options_.exposure.has_value(), first && options_.sample_limit > 0};
+  RenderSettings s = with_scene_render(settings_, scene.render, user);
+  s.max_bounces = std::clamp(s.max_bounces, 1, 16);  // the panel's range
+  return s;
+}
+
+RenderMode App::mode_for(const Loading& l) const { return l.edit || !l.scene ? settings_.mode : shown_settings(*l.scene).mode; }
+
 void App::apply_scene(Scene scene, const PackedScene& packed, StagedScene* staged, const std::optional<Camera>& camera) {
-  renderer_->set_scene(scene, packed, staged);  // throws before changing anything if the program does not build
+  // The scene's <Render>, on every load and reload (an author's edit of it applies), set
+  // with the scene: its program (mode) was built ahead.
+  const RenderSettings next = shown_settings(scene);
+  renderer_->set_scene(scene, packed, staged, &next);  // throws before changing anything if the program does not build
   shown_ = true;
   env_panel_.scene_loaded(scene.environment);
   if (camera) {
@@ -167,14 +182,8 @@ void App::apply_scene(Scene scene, const PackedScene& packed, StagedScene* stage
     }
     renderer_->set_camera(c);
   }
-  // The scene's <Render>, on every load and reload (an author's edit of it applies); on the
-  // first scene, what the page's link set wins.
-  const bool first = loads_ == 0;
-  const UserSet user{first && options_.bounces.has_value(), false, first && options_.tonemap.has_value(),
-                     first && options_.exposure.has_value(), first && options_.sample_limit > 0};
-  settings_ = with_scene_render(settings_, scene.render, user);
-  settings_.max_bounces = std::clamp(settings_.max_bounces, 1, 16);  // the panel's range
-  if (scene.render.exposure && !user.exposure) auto_exposure_ = false;
+  if (scene.render.exposure && !(loads_ == 0 && options_.exposure)) auto_exposure_ = false;  // the scene's exposure applied
+  settings_ = next;
   // A reload keeps the selection when the object is still there.
   if (selected_ >= int(scene.shapes.size()) || scene.path != scene_.path) selected_ = -1;
   scene_ = std::move(scene);
@@ -201,9 +210,9 @@ void App::context_restored() {
   // one fail, load_failed brings the kept one back.
   if (loading_) {
     loading_->staged.reset();  // its textures were the lost context's
-    if (loading_->scene) renderer_->program_ready(*loading_->scene);
+    if (loading_->scene) renderer_->program_ready(*loading_->scene, mode_for(*loading_));
   }
-  else if (loads_ > 0) start_loading(scene_, true);
+  else if (loads_ > 0) start_loading(scene_, true, true);
   ++context_restores_;
 }
 
@@ -289,8 +298,7 @@ void App::scene_edited(int moved) {
       return;
   }
   packed_.reset();  // refitted, maybe, but not shown: the new packing replaces it
-  start_loading(scene_, true);  // replaces an edit in progress: scene_ has both
-  loading_->edit = true;
+  start_loading(scene_, true, true);  // replaces an edit in progress: scene_ has both
 }
 
 // Resolution scale, the sample target's estimated time, and a compiling indicator.

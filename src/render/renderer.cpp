@@ -92,9 +92,11 @@ bool Renderer::program_ready_for(const Features& f) {
   return slot->program.completed();
 }
 
-bool Renderer::program_ready(const Scene& scene) {
+bool Renderer::program_ready(const Scene& scene) { return program_ready(scene, settings_.mode); }
+
+bool Renderer::program_ready(const Scene& scene, RenderMode mode) {
   Features f = Features::of(scene);
-  f.mode = settings_.mode;
+  f.mode = mode;
   f.compute = using_compute();
   return program_ready_for(f);
 }
@@ -123,7 +125,7 @@ void Renderer::update_sh() {
 
 void Renderer::set_scene(const Scene& scene) { set_scene(scene, pack_scene(scene)); }
 
-void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* staged) {
+void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* staged, const RenderSettings* settings) {
   // Everything that can fail (packing, limits, image maps, compiling) happens before any
   // state changes: a scene that cannot be rendered leaves the previous one and its samples.
   // The record textures: staged ahead (a page), else staged here in one go; the
@@ -137,11 +139,14 @@ void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* 
   // Image maps first: a scene beyond this GPU's texture limits throws before anything changes.
   const bool textured = features_.has(MaterialKind::Textured);
   MapArray maps;
+  const RenderSettings old_settings = settings_;
   try {
     if (textured) maps = build_map_array(scene, TextureArray::max_size(), TextureArray::max_layers());
+    if (settings) settings_ = *settings;
     select_program();
   } catch (...) {
     features_ = old;  // nothing changed
+    settings_ = old_settings;
     throw;
   }
   have_scene_ = true;

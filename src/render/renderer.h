@@ -48,7 +48,9 @@ class Renderer {
   // The same with the scene already packed (render/packing.h: a page packs a large scene
   // in slices across frames, then swaps it in here at once), and its record textures
   // uploaded ahead when `staged` is given and done (render/staged_scene.h; taken from it).
-  void set_scene(const Scene& scene, const PackedScene& packed, StagedScene* staged = nullptr);
+  // With `settings`, they are set with the scene, one program chosen for both (a page
+  // applying a scene's <Render mode> would otherwise build the old mode's program first).
+  void set_scene(const Scene& scene, const PackedScene& packed, StagedScene* staged = nullptr, const RenderSettings* settings = nullptr);
   // An edit of the last scene set that changed values only - materials (emission
   // included), the environment - and no shape's geometry: the shape, material and light
   // records are packed and uploaded again (one per shape, material, light: no BVH), and
@@ -63,6 +65,7 @@ class Renderer {
   // true when set_scene(scene) will not block on it (always, without
   // KHR_parallel_shader_compile). A page polls this once a frame and keeps drawing.
   bool program_ready(const Scene& scene);
+  bool program_ready(const Scene& scene, RenderMode mode);  // the same for that mode
   void set_camera(const Camera& camera);
   void set_settings(const RenderSettings& s);
   void resize(int width, int height);
