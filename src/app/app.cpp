@@ -539,7 +539,7 @@ std::string App::stats_json() const {
 std::string App::load_stage() const {
   if (!loading_) return "";
   const Loading& l = *loading_;
-  return l.read ? l.read->stage() : !l.packed ? l.pack->stage() : l.staged && l.staged->done() ? "compiling" : "uploading";
+  return l.read ? l.read->stage() : !l.pack ? "starting the packing" : !l.packed ? l.pack->stage() : l.staged && l.staged->done() ? "compiling" : "uploading";
 }
 
 // The scene on its way (null when none) and the last one's preparation.

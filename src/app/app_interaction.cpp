@@ -28,7 +28,7 @@ constexpr float kClickSlopPixels = 4.0f;   // a press and release closer than th
 // triangle, a vertex, a BVH node or 64 bytes of a file: 0.1-0.5 ms).
 constexpr double kFrameWorkMs = 4.0;
 constexpr long kWorkUnits = 8192;
-constexpr int kUploadRows = 8;  // rows of record texels per upload call (512 KB)
+constexpr int kUploadRows = 1;  // rows of record texels per upload call (64 KB)
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -75,8 +75,9 @@ bool App::work(double budget_ms) {
         l.read.reset();
         std::printf("scene %s: read in %d slices (%.0f ms of work, %.0f ms after the request)\n", l.path.c_str(), l.read_slices,
                     l.read_ms, ms_since(l.since));
-        start_packing(l);
       }
+    } else if (!l.pack) {
+      start_packing(l);  // a slice of its own (the program's build starts; in the page 10+ ms)
     } else if (!l.packed) {
       bool done = false;
       while (!(done = l.pack->run(kWorkUnits)) && ms_since(t0) < budget_ms) {
@@ -88,8 +89,11 @@ bool App::work(double budget_ms) {
     } else {
       // Then the record textures, a band of rows at a time (copies to the GPU; WebGL
       // calls between animation frames are fine, and a lost context drops `staged`).
-      if (!l.staged) l.staged = std::make_unique<StagedScene>(renderer_->limits(), *l.packed);
-      while (!l.staged->upload(kUploadRows) && ms_since(t0) < budget_ms) {
+      if (!l.staged) {
+        l.staged = std::make_unique<StagedScene>(renderer_->limits(), *l.packed);  // a slice of its own
+      } else {
+        while (!l.staged->upload(kUploadRows) && ms_since(t0) < budget_ms) {
+        }
       }
       l.upload_ms += ms_since(t0);
     }
@@ -318,7 +322,7 @@ double App::load_progress() const {
   // Reading the meshes (a scene's first part of the bar), then packing and uploading.
   constexpr double kReadShare = 0.3;
   if (l.read) return kReadShare * l.read->progress();
-  const double rest = l.packed ? 0.9 + 0.1 * (l.staged ? l.staged->progress() : 0.0) : 0.9 * l.pack->progress();
+  const double rest = l.packed ? 0.9 + 0.1 * (l.staged ? l.staged->progress() : 0.0) : l.pack ? 0.9 * l.pack->progress() : 0.0;
   return l.read_slices > 0 ? kReadShare + (1.0 - kReadShare) * rest : rest;
 }
 

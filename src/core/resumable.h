@@ -33,6 +33,9 @@ namespace pt {
 struct Work {
   long units;
 };
+// `co_await EndSlice{}`: the current run() stops here (the next step is long enough to
+// deserve a slice of its own); finish() goes on through it.
+struct EndSlice {};
 
 class Resumable {
  public:
@@ -58,6 +61,10 @@ class Resumable {
     Spend await_transform(Work w) noexcept {
       *left -= w.units;
       return {*left > 0};
+    }
+    Spend await_transform(EndSlice) noexcept {
+      *left = 0;
+      return {false};
     }
 
     struct Inner {
@@ -91,7 +98,10 @@ class Resumable {
     long left = units;
     return resume_within(&left);
   }
-  void finish() { run(LONG_MAX); }
+  void finish() {
+    while (!run(LONG_MAX)) {
+    }
+  }
   bool done() const { return !h_ || h_.done(); }
 
  private:

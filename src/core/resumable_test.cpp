@@ -74,3 +74,21 @@ TEST_CASE("an exception inside an inner Resumable reaches run(), after the work 
   CHECK(out == std::vector<int>{0, 1, 2, 3, 4, -1, 0, 1, 2});
   CHECK(r.done());
 }
+
+TEST_CASE("EndSlice ends the current run there; finish goes on through it", "[resumable]") {
+  auto two_steps = [](std::vector<int>& out) -> Resumable {
+    out.push_back(1);
+    co_await EndSlice{};
+    out.push_back(2);
+  };
+  std::vector<int> out;
+  Resumable r = two_steps(out);
+  CHECK_FALSE(r.run(1000000));  // plenty of units: stopped by EndSlice, not by them
+  CHECK(out == std::vector<int>{1});
+  CHECK(r.run(1));
+  CHECK(out == std::vector<int>{1, 2});
+  std::vector<int> all;
+  Resumable f = two_steps(all);
+  f.finish();
+  CHECK(all == std::vector<int>{1, 2});
+}

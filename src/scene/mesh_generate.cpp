@@ -72,18 +72,24 @@ Resumable generate_icosphere_steps(int level, float displace, MeshData& m) {
     if (i % kStep == kStep - 1) co_await Work{kStep};
   }
   // Area-weighted vertex normals of the displaced surface; uv by longitude and latitude.
-  m.normals.assign(m.positions.size(), glm::vec3(0.0f));
+  // Fresh arrays are filled in slices, like the edge table: touching 8 MB of new pages in
+  // one step is slow where page faults are (20 MB took 100 ms natively on the test VM).
+  m.normals.reserve(m.positions.size());
+  while (m.normals.size() < m.positions.size()) {
+    m.normals.resize(std::min(m.positions.size(), m.normals.size() + 16 * size_t(kStep)), glm::vec3(0.0f));
+    co_await Work{kStep};
+  }
   for (size_t i = 0; i < m.triangles.size(); ++i) {
     const glm::uvec3 tri = m.triangles[i];
     const glm::vec3 n = glm::cross(m.positions[tri.y] - m.positions[tri.x], m.positions[tri.z] - m.positions[tri.x]);
     for (int k = 0; k < 3; ++k) m.normals[tri[k]] += n;
     if (i % kStep == kStep - 1) co_await Work{kStep};
   }
-  m.uvs.resize(m.positions.size());
+  m.uvs.reserve(m.positions.size());
   for (size_t i = 0; i < m.positions.size(); ++i) {
     m.normals[i] = glm::normalize(m.normals[i]);
     const glm::vec3 d = glm::normalize(m.positions[i]);
-    m.uvs[i] = glm::vec2(0.5f + std::atan2(d.z, d.x) / 6.2831853f, std::acos(glm::clamp(d.y, -1.0f, 1.0f)) / 3.14159265f);
+    m.uvs.emplace_back(0.5f + std::atan2(d.z, d.x) / 6.2831853f, std::acos(glm::clamp(d.y, -1.0f, 1.0f)) / 3.14159265f);
     if (i % kStep == kStep - 1) co_await Work{kStep};
   }
 }
