@@ -82,6 +82,20 @@ TEST_CASE("staging a scene beyond the GPU's texture size throws before making an
   CHECK_THROWS_WITH(StagedScene(small, p), Catch::Contains("the scene's objects") && Catch::Contains("GL_MAX_TEXTURE_SIZE"));
 }
 
+// update_values(scene) on a renderer showing `before`: accepted, no program built, and
+// the image bit for bit that of `scene` set from scratch. Returns the updated image.
+static std::vector<float> updated_as_set_anew(Renderer& r, const Scene& scene, const std::vector<float>& before) {
+  const size_t programs = r.programs_compiled();
+  REQUIRE(r.update_values(scene));
+  const std::vector<float> updated = render(r, 2);
+  CHECK(updated != before);
+  CHECK(r.programs_compiled() == programs);
+  Renderer fresh;
+  fresh.set_scene(scene);
+  CHECK(render(fresh, 2) == updated);
+  return updated;
+}
+
 // The page's edits of values (a colour, a roughness, a light's colour, the environment's
 // colour) re-upload only the shape, material and light records: the image is bit for bit
 // that of the edited scene set from scratch. An edit that changes which shapes are lights
@@ -92,19 +106,12 @@ TEST_CASE("an edit of values updates the records in place and renders as the edi
   Renderer r;
   r.set_scene(scene);
   const std::vector<float> before = render(r, 2);
-  const size_t programs = r.programs_compiled();
   for (const Shape& s : scene.shapes)
     if (s.kind == ShapeKind::Sphere && s.light < 0) scene.materials[size_t(s.material)].tint = glm::vec3(0.2f, 0.9f, 0.3f);
   scene.lights[0].color = glm::vec3(1.0f, 0.5f, 0.25f);
   sync_light(scene, 0);
   scene.environment.color = glm::vec3(0.1f, 0.2f, 0.3f);
-  REQUIRE(r.update_values(scene));
-  const std::vector<float> edited = render(r, 2);
-  CHECK(edited != before);
-  CHECK(r.programs_compiled() == programs);
-  Renderer fresh;
-  fresh.set_scene(scene);
-  CHECK(render(fresh, 2) == edited);
+  const std::vector<float> edited = updated_as_set_anew(r, scene, before);
 
   Scene dark = scene;  // the light goes out: its sphere is no longer a sampled light
   for (const Shape& s : dark.shapes)
@@ -125,16 +132,9 @@ TEST_CASE("an edit of values updates the records in place and renders as the edi
   scene.environment.map = sky(0.05f, 0.1f, 0.4f);
   r.set_scene(scene);
   const std::vector<float> blue = render(r, 2);
-  const size_t with_map = r.programs_compiled();
   scene.environment.map = sky(0.3f, 0.02f, 0.01f);
   scene.environment.rotation = 90.0f;
-  REQUIRE(r.update_values(scene));
-  const std::vector<float> red = render(r, 2);
-  CHECK(red != blue);
-  CHECK(r.programs_compiled() == with_map);
-  Renderer fresh_map;
-  fresh_map.set_scene(scene);
-  CHECK(render(fresh_map, 2) == red);
+  const std::vector<float> red = updated_as_set_anew(r, scene, blue);
   scene.environment.map.reset();  // a map to a colour: another program, refused
   CHECK_FALSE(r.update_values(scene));
   CHECK(render(r, 2) == red);

@@ -24,6 +24,15 @@ std::string bytes_of(const std::string& rel) {
   return *b;
 }
 
+// quad.glb's BIN chunk: the quad's geometry, as the .gltf tests' buffer files hold it.
+std::string quad_bin() {
+  const std::string glb = bytes_of("tests/fuzz/corpus/mesh_gltf/quad.glb");
+  uint32_t json = 0, bin = 0;
+  std::memcpy(&json, glb.data() + 12, 4);
+  std::memcpy(&bin, glb.data() + 20 + json, 4);
+  return glb.substr(20 + json + 8, bin);
+}
+
 std::string error_of(const std::string& bytes, const GltfResolver& resolve) {
   try {
     parse_gltf(bytes, "m.gltf", resolve);
@@ -63,11 +72,7 @@ TEST_CASE("glTF buffer files go through the resolver: refused without one, depen
   // missing-buffer.gltf names "no-such.bin" (the quad's geometry, as quad.glb's BIN chunk).
   const std::string dir = std::string(PT_BINARY_DIR) + "/gltf-test";
   std::filesystem::create_directories(dir);
-  const std::string glb = bytes_of("tests/fuzz/corpus/mesh_gltf/quad.glb");
-  uint32_t json = 0, bin = 0;
-  std::memcpy(&json, glb.data() + 12, 4);
-  std::memcpy(&bin, glb.data() + 20 + json, 4);
-  std::ofstream(dir + "/no-such.bin", std::ios::binary) << glb.substr(20 + json + 8, bin);
+  std::ofstream(dir + "/no-such.bin", std::ios::binary) << quad_bin();
   const std::string text = bytes_of("tests/malformed/gltf/missing-buffer.gltf");
   std::ofstream(dir + "/quad.gltf", std::ios::binary) << text;
 
@@ -101,10 +106,7 @@ TEST_CASE("glTF buffers are ours: a buffer file read 256 KB a slice, the GLB's B
   const std::string dir = std::string(PT_BINARY_DIR) + "/gltf-test";
   std::filesystem::create_directories(dir);
   const std::string glb = bytes_of("tests/fuzz/corpus/mesh_gltf/quad.glb");
-  uint32_t json = 0, bin = 0;
-  std::memcpy(&json, glb.data() + 12, 4);
-  std::memcpy(&bin, glb.data() + 20 + json, 4);
-  std::ofstream(dir + "/big.bin", std::ios::binary) << glb.substr(20 + json + 8, bin) << std::string(size_t(1) << 20, '\0');
+  std::ofstream(dir + "/big.bin", std::ios::binary) << quad_bin() << std::string(size_t(1) << 20, '\0');
   std::string text = bytes_of("tests/malformed/gltf/missing-buffer.gltf");
   REQUIRE(text.find("no-such.bin") != std::string::npos);
   text.replace(text.find("no-such.bin"), 11, "big.bin");
