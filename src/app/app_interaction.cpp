@@ -62,41 +62,47 @@ bool App::work(double budget_ms) {
   Loading& l = *loading_;
   const std::string stage = load_stage();
   const auto t0 = std::chrono::steady_clock::now();
+  // The stages in order, as many as the budget allows: a small scene loads in one slice.
+  // A long step (starting the packing, creating the record textures) starts a stage only
+  // with the budget untouched, so that it never adds to another stage's slice.
+  auto fresh = [&] { return ms_since(t0) < 1.0; };
   try {
-    if (l.read) {
-      bool done = false;
-      while (!(done = l.read->run(kWorkUnits)) && ms_since(t0) < budget_ms) {
-      }
-      const double ms = ms_since(t0);
-      l.read_ms += ms;
-      ++l.read_slices;
-      if (done) {
-        l.scene = std::make_unique<Scene>(l.read->take());
-        l.read.reset();
-        std::printf("scene %s: read in %d slices (%.0f ms of work, %.0f ms after the request)\n", l.path.c_str(), l.read_slices,
-                    l.read_ms, ms_since(l.since));
-      }
-    } else if (!l.pack) {
-      start_packing(l);  // a slice of its own (the program's build starts; in the page 10+ ms)
-    } else if (!l.packed) {
-      bool done = false;
-      while (!(done = l.pack->run(kWorkUnits)) && ms_since(t0) < budget_ms) {
-      }
-      if (done) l.packed = l.pack->take();
-      const double ms = ms_since(t0);
-      l.work_ms += ms;
-      ++l.slices;
-    } else {
-      // Then the record textures, a band of rows at a time (copies to the GPU; WebGL
-      // calls between animation frames are fine, and a lost context drops `staged`).
-      if (!l.staged) {
-        l.staged = std::make_unique<StagedScene>(renderer_->limits(), *l.packed);  // a slice of its own
+    do {
+      const auto ts = std::chrono::steady_clock::now();
+      if (l.read) {
+        bool done = false;
+        while (!(done = l.read->run(kWorkUnits)) && ms_since(t0) < budget_ms) {
+        }
+        l.read_ms += ms_since(ts);
+        ++l.read_slices;
+        if (done) {
+          l.scene = std::make_unique<Scene>(l.read->take());
+          l.read.reset();
+          std::printf("scene %s: read in %d slices (%.0f ms of work, %.0f ms after the request)\n", l.path.c_str(), l.read_slices,
+                      l.read_ms, ms_since(l.since));
+        }
+      } else if (!l.pack) {
+        if (!fresh() && l.scene->meshes.size() > 0) break;  // the program's build starts: 10+ ms in the page
+        start_packing(l);
+      } else if (!l.packed) {
+        bool done = false;
+        while (!(done = l.pack->run(kWorkUnits)) && ms_since(t0) < budget_ms) {
+        }
+        if (done) l.packed = l.pack->take();
+        l.work_ms += ms_since(ts);
+        ++l.slices;
+      } else if (!l.staged) {
+        if (!fresh() && l.packed->prims.count() > kDataWidth) break;  // large textures: their own slice
+        l.staged = std::make_unique<StagedScene>(renderer_->limits(), *l.packed);
+        l.upload_ms += ms_since(ts);
       } else {
+        // The record textures, a row at a time (copies to the GPU; WebGL calls between
+        // animation frames are fine, and a lost context drops `staged`).
         while (!l.staged->upload(kUploadRows) && ms_since(t0) < budget_ms) {
         }
+        l.upload_ms += ms_since(ts);
       }
-      l.upload_ms += ms_since(t0);
-    }
+    } while (preparing() && ms_since(t0) < budget_ms);
   } catch (const std::exception& e) {
     load_failed(l.path, e.what());
     return false;

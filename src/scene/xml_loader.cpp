@@ -733,7 +733,9 @@ Resumable SceneLoad::steps() {
     }
   }
   s.stage = "building the scene";
-  co_await EndSlice{};  // the scene's build (a step: 10-40 ms in the page for a million triangles) in a slice of its own
+  // After meshes, the scene's build (one step: 10-40 ms in the page for a million
+  // triangles) gets a slice of its own.
+  if (!s.sources.empty()) co_await EndSlice{};
   s.loader.root(s.doc.RootElement());
   s.scene = std::move(s.loader.scene);
 }

@@ -243,7 +243,8 @@ async function main() {
     // (scene0: in scene2 the <Light> sits inside the emitting box and adds nothing.)
     await page.evaluate(() => window.ptLoadScene("/scenes/reference/scene0.xml"));
     await page.evaluate(() => window.ptSetLimit(16));
-    await page.waitForFunction(() => window.ptStats().samples >= 16, null, { timeout: 60000, polling: 100 });
+    await page.waitForFunction(() => { const s = window.ptLoadStatus(); return s.scene.endsWith("scene0.xml") && s.samples >= 16; },
+                               null, { timeout: 60000, polling: 100 });  // loading takes frames: scene2 is shown meanwhile
     const dim = await stats(page);
     await page.mouse.click(190, 231);  // near the right end of "intensity" (0..300)
     await page.waitForFunction((m) => { const s = window.ptStats(); return s.samples >= 16 && s.mean[1] !== m; },
