@@ -14,6 +14,7 @@
 #include "gpu/texture.h"
 #include "render/packing.h"
 #include "render/renderer.h"
+#include "render/scene_render.h"
 #include "render/staged_scene.h"
 #include "scene/scene.h"
 #include "scene/xml_loader.h"
@@ -173,6 +174,7 @@ class App {
   // The settings a loaded scene is shown with: the page's, and the scene's <Render> where
   // the page's link did not set them (on the first scene), clamped to the panel's ranges.
   RenderSettings shown_settings(const Scene& scene) const;
+  UserSet link_set() const;  // what the page's link set on the first scene: the scene's <Render> leaves it
   RenderMode mode_for(const Loading& l) const;  // the program mode of a scene on its way
   void begin_loading(Loading l);    // as loading_, replacing one in progress
   void start_packing(Loading& l);   // once l.scene is read

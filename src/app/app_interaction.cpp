@@ -13,7 +13,6 @@
 #include <cstdio>
 #include "app/picking.h"
 #include "app/selection.h"
-#include "render/scene_render.h"
 
 namespace pt {
 
@@ -163,11 +162,14 @@ void App::poll_loading() {
   }
 }
 
-RenderSettings App::shown_settings(const Scene& scene) const {
+UserSet App::link_set() const {
   const bool first = loads_ == 0;  // what the page's link set wins on the first scene only
-  const UserSet user{first && options_.bounces.has_value(), false, first && options_.tonemap.has_value(),
-                     first && options_.exposure.has_value(), first && options_.sample_limit > 0};
-  RenderSettings s = with_scene_render(settings_, scene.render, user);
+  return {first && options_.bounces.has_value(), false, first && options_.tonemap.has_value(), first && options_.exposure.has_value(),
+          first && options_.sample_limit > 0};
+}
+
+RenderSettings App::shown_settings(const Scene& scene) const {
+  RenderSettings s = with_scene_render(settings_, scene.render, link_set());
   s.max_bounces = std::clamp(s.max_bounces, 1, 16);  // the panel's range
   return s;
 }
@@ -192,7 +194,7 @@ void App::apply_scene(Scene scene, const PackedScene& packed, StagedScene* stage
     }
     renderer_->set_camera(c);
   }
-  if (scene.render.exposure && !(loads_ == 0 && options_.exposure)) auto_exposure_ = false;  // the scene's exposure applied
+  if (scene.render.exposure && !link_set().exposure) auto_exposure_ = false;  // the scene's exposure applied
   settings_ = next;
   // A reload keeps the selection when the object is still there.
   if (selected_ >= int(scene.shapes.size()) || scene.path != scene_.path) selected_ = -1;

@@ -34,27 +34,23 @@
 namespace pt {
 namespace {
 
-// What the tinygltf callbacks need: the resolver for external files, and the first
-// problem one of them had (tinygltf's own message for it would not say which file).
+// What reading the files a glTF names needs: its path and the resolver.
 struct Context {
   std::string path;  // the glTF file
   const GltfResolver* resolve = nullptr;
-  const tinygltf::Model* model = nullptr;
-  std::string error;  // "where: what", set by a callback that refused
 };
 
 constexpr long kStep = 4096;  // elements between two checks of the work left
 
 std::string pointer(const char* array, size_t index) { return std::string("/") + array + "/" + std::to_string(index); }
 
-// Buffers by URI: the path is relative to the glTF's folder and goes through the
-// resolver; tinygltf's own search (its base folder, then the working directory) is
-// bypassed by passing it no base folder and saying every file exists.
+// tinygltf's file callbacks: it opens no file itself (its own search - its base folder,
+// then the working directory - is never used).
 bool file_exists(const std::string&, void*) { return true; }
 std::string expand_path(const std::string& p, void*) { return p; }
 bool write_file(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
-// The file a URI names (tinygltf has URL-decoded a buffer's; an image's is decoded
-// here), through the resolver: its path, or nullopt with *why when refused.
+// The file a (URL-decoded) URI names, relative to the glTF's folder, through the
+// resolver: its path, or nullopt with *why when refused.
 std::optional<std::string> resolve_referenced(const Context& c, const std::string& uri, std::string* why) {
   const std::string rel = !uri.empty() && uri[0] == '/' ? uri : directory_of(c.path) + "/" + uri;
   if (!c.resolve || !*c.resolve) {
@@ -69,29 +65,23 @@ std::optional<std::string> resolve_referenced(const Context& c, const std::strin
   return std::nullopt;
 }
 
-// The same file's bytes; false with *why when refused or unreadable.
-bool read_referenced(const Context& c, const std::string& uri, const char* kind, std::string* out, std::string* why) {
+// An image file's bytes; false with *why when refused or unreadable (buffer files are
+// read in slices by parse_gltf_steps).
+bool read_image_file(const Context& c, const std::string& uri, std::string* out, std::string* why) {
   const std::optional<std::string> file = resolve_referenced(c, uri, why);
   if (!file) return false;
   if (auto bytes = read_file(*file)) {
     *out = std::move(*bytes);
     return true;
   }
-  *why = std::string("cannot open the ") + kind + " file " + *file;
+  *why = "cannot open the image file " + *file;
   return false;
 }
 
-bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& uri, void* user) {
-  auto& c = *static_cast<Context*>(user);
-  // Buffers are parsed in order and appended when read: the one being read is the next.
-  const std::string where = pointer("buffers", c.model ? c.model->buffers.size() : 0);
-  std::string bytes, why;
-  if (read_referenced(c, uri, "buffer", &bytes, &why)) {
-    out->assign(bytes.begin(), bytes.end());
-    return true;
-  }
-  if (c.error.empty()) c.error = where + ": " + why;
-  *err = "refused";
+// Every buffer file is read by parse_gltf_steps before tinygltf parses (own_buffers):
+// tinygltf is never to read one itself.
+bool refuse_file(std::vector<unsigned char>*, std::string* err, const std::string&, void*) {
+  *err = "buffer files are read before tinygltf parses";
   return false;
 }
 
@@ -334,7 +324,7 @@ class Materials {
       bytes.assign(img.image.begin(), img.image.end());  // embedded: a data: URI
     } else if (img.uri.empty()) {
       r_.fail(where, "no image data");
-    } else if (!read_referenced(c_, tinygltf::dlib::urldecode(img.uri), "image", &bytes, &why)) {
+    } else if (!read_image_file(c_, tinygltf::dlib::urldecode(img.uri), &bytes, &why)) {
       r_.fail(where, why);
     }
     auto out = std::make_shared<GltfImage>();
@@ -372,10 +362,10 @@ struct OwnBuffer {
   size_t length = 0;  // byteLength
 };
 
-// The buffers of the JSON that are ours to read, and in *rewritten the JSON for tinygltf
-// with each of them replaced by a 1-byte data: URI (left empty when there are none).
-// Anything unusual (no byteLength, a data: URI, a buffer without uri in a .gltf, JSON
-// that does not parse) is left to tinygltf, which reports it as before.
+// The buffers of the JSON that are ours to read - every one but data: URIs, which
+// tinygltf decodes - and in *rewritten the JSON for tinygltf with each of them replaced
+// by a 1-byte data: URI (left empty when there are none). JSON that does not parse is
+// left to tinygltf, which reports where.
 std::vector<OwnBuffer> own_buffers(const GltfJson& json, const std::string& path, std::string* rewritten) {
   std::vector<OwnBuffer> out;
   nlohmann::json doc = nlohmann::json::parse(json.text, json.text + json.size, nullptr, false);
@@ -383,20 +373,22 @@ std::vector<OwnBuffer> own_buffers(const GltfJson& json, const std::string& path
   nlohmann::json& buffers = doc["buffers"];
   for (size_t i = 0; i < buffers.size(); ++i) {
     nlohmann::json& b = buffers[i];
-    if (!b.is_object() || !b.contains("byteLength") || !b["byteLength"].is_number_unsigned()) continue;
+    const std::string at = pointer("buffers", i);
+    if (!b.is_object()) throw InputError(path, 0, at + ": not an object");
+    if (!b.contains("byteLength") || !b["byteLength"].is_number_unsigned())
+      throw InputError(path, 0, at + ": byteLength must be a whole number of bytes");
     OwnBuffer o;
     o.index = i;
     o.length = b["byteLength"].get<size_t>();
     if (!b.contains("uri")) {
-      if (!json.binary) continue;
-      const std::string at = pointer("buffers", i);
+      if (!json.binary) throw InputError(path, 0, at + ": no uri (only a binary glTF's buffers may have none)");
       if (!json.has_bin) throw InputError(path, 0, at + ": no uri, and the file has no BIN chunk");
       if (o.length > json.bin_size)
         throw InputError(path, 0, at + ": byteLength " + std::to_string(o.length) + " is more than the BIN chunk's " +
                                       std::to_string(json.bin_size) + " bytes");
       o.bin_chunk = true;
     } else {
-      if (!b["uri"].is_string()) continue;
+      if (!b["uri"].is_string()) throw InputError(path, 0, at + ": uri is not a string");
       const std::string uri = b["uri"].get<std::string>();
       if (uri.rfind("data:", 0) == 0) continue;
       o.uri = tinygltf::dlib::urldecode(uri);
@@ -448,16 +440,14 @@ Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver res
     own[o.index] = Bytes{reinterpret_cast<const unsigned char*>(files.back().data()), o.length};
   }
   tinygltf::Model model;
-  ctx.model = &model;
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&keep_image, &ctx);
-  loader.SetFsCallbacks({&file_exists, &expand_path, &read_whole_file, &write_file, &ctx});
+  loader.SetImageLoader(&keep_image, nullptr);
+  loader.SetFsCallbacks({&file_exists, &expand_path, &refuse_file, &write_file, nullptr});
   std::string err, warn;
   const bool ok = !text.empty() ? loader.LoadASCIIFromString(&model, &err, &warn, text.data(), unsigned(text.size()), "")
                   : json.binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                                               unsigned(bytes.size()), "")
                                 : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), "");
-  if (!ctx.error.empty()) throw InputError(path, 0, ctx.error);
   if (!ok) fail_gltf_parse(err, path, json);
   std::vector<Bytes> buffers;
   for (size_t i = 0; i < model.buffers.size(); ++i)

@@ -88,6 +88,17 @@ TEST_CASE("glTF buffer files go through the resolver: refused without one, depen
   CHECK(parts[0].mesh->triangles.size() == 2);
   CHECK(error_of(text, [](const std::string&) -> std::string { throw InputError("x.xml", 3, "no"); }) ==
         "m.gltf: /buffers/0: x.xml:3: no");
+  // Buffers that are neither a data: URI nor a file, or have no whole byte count.
+  auto edited = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    REQUIRE(t.find(from) != std::string::npos);
+    return t.replace(t.find(from), from.size(), to);
+  };
+  CHECK(error_of(edited("\"byteLength\": 140,\n   \"uri\": \"no-such.bin\"", "\"byteLength\": 140"), {}) ==
+        "m.gltf: /buffers/0: no uri (only a binary glTF's buffers may have none)");
+  CHECK(error_of(edited("\"uri\": \"no-such.bin\"", "\"uri\": 7"), {}) == "m.gltf: /buffers/0: uri is not a string");
+  CHECK(error_of(edited("\"byteLength\": 140,", "\"byteLength\": 140.5,"), {}) ==
+        "m.gltf: /buffers/0: byteLength must be a whole number of bytes");
 
   const std::string scene = "<SceneLevel><Camera position=\"0 0 5\"/><Objects><Mesh src=\"quad.gltf\"/></Objects></SceneLevel>";
   const Scene s = load_scene_text(scene, dir + "/s.xml");
