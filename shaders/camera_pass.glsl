@@ -41,6 +41,8 @@ bool non_finite(vec3 c) {
   return any(equal(e, uvec3(0x7f800000u)));
 }
 
+#include "surface.glsl"
+
 vec3 trace_path(Ray r);
 
 void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {

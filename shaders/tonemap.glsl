@@ -1,6 +1,6 @@
 // tonemap.glsl: display transforms from linear radiance to display values in [0, 1].
 // Applied on display only; the accumulation always holds linear radiance.
-// Ids match ToneMap in src/render/tonemap.h.
+// Ids match ToneMap in src/core/tonemap.h.
 #define TM_NONE 0
 #define TM_LINEAR 1
 #define TM_REINHARD 2

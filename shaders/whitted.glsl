@@ -28,8 +28,12 @@ vec3 whitted_env(vec3 d) {
 #endif
 }
 
-// Direct light reflected towards wo at p by non-delta material m.
-vec3 whitted_direct(MaterialRec m, Frame fr, vec3 p, vec3 n, vec3 wo, bool entering) {
+// Direct light reflected towards the viewer at p by the resolved non-delta surface sf.
+vec3 whitted_direct(Surface sf, vec3 p) {
+  MaterialRec m = sf.m;
+  Frame fr = sf.fr;
+  vec3 n = sf.n, wo = sf.wo;
+  bool entering = sf.entering;
   vec3 L = vec3(0.0);
   float pdf_b;
   for (int li = 0; li < u_num_lights; ++li) {
@@ -37,21 +41,23 @@ vec3 whitted_direct(MaterialRec m, Frame fr, vec3 p, vec3 n, vec3 wo, bool enter
     vec3 wi;
     float pdf, dist;
     if (!light_sample_shape(load_shape(l.shape), p, next4().xy, wi, pdf, dist) || !(pdf > 0.0)) continue;
-    vec3 f = material_eval(m, wo, to_local(fr, wi), entering, pdf_b);
+    vec3 wl = to_local(fr, wi);
+    vec3 f = surface_sides_agree(sf, wi, wl) ? material_eval(m, wo, wl, entering, pdf_b) : vec3(0.0);
     if (max3(f) > 0.0 && light_visible(p, n, wi, dist, l.shape)) L += f * l.radiance / pdf;
   }
 #ifdef HAS_ENV_MAP
   vec3 wi, rad;
   float pdf;
   if (env_sample(next4().xy, wi, pdf, rad)) {
-    vec3 f = material_eval(m, wo, to_local(fr, wi), entering, pdf_b);
+    vec3 wl = to_local(fr, wi);
+    vec3 f = surface_sides_agree(sf, wi, wl) ? material_eval(m, wo, wl, entering, pdf_b) : vec3(0.0);
     if (max3(f) > 0.0 && light_visible(p, n, wi, T_INF, -1)) L += f * rad / pdf;
   }
 #else
   BsdfSample bs;
   if (max3(u_env_color) > 0.0 && material_sample(m, wo, entering, next4().xyz, bs)) {
     vec3 wi = normalize(from_local(fr, bs.wi));
-    if (light_visible(p, n, wi, T_INF, -1)) L += bs.weight * u_env_color;
+    if (surface_sides_agree(sf, wi, bs.wi) && light_visible(p, n, wi, T_INF, -1)) L += bs.weight * u_env_color;
   }
 #endif
   return L;
@@ -66,33 +72,22 @@ vec3 trace_path(Ray r) {
       L += beta * whitted_env(r.d);
       break;
     }
-    ShapeRec s = load_shape(h.id);
-    MaterialRec m = load_material(s.material);
-    bool entering = dot(r.d, h.n) < 0.0;
-    if (entering) L += beta * m.emission;
-#ifdef HAS_MAT_EMIT
-    if (m.kind == MAT_EMIT) break;  // Emit+Absorb ends the ray
-#endif
+    Surface sf = surface_hit(r, h);
+    L += beta * sf.emission;
+    if (sf.absorbs) break;  // Emit+Absorb ends the ray
     if (bounce >= u_max_bounces) break;
-    vec3 n = entering ? h.n : -h.n;  // faces the side the ray came from
-    Frame fr = frame_from(n);
-    vec3 wo = to_local(fr, -r.d);
     vec4 u = next4();  // xyz: delta lobe choice; w: a composite's child
-#ifdef HAS_MAT_FRESNEL_COMPOSITE
-    m = resolve_fresnel_composite(m, wo.z, entering, u.w);
-#endif
-#ifdef HAS_TEXTURES
-    m = resolve_texture(m, h.p);
-#endif
-    if (!material_is_delta(m)) {
-      L += beta * whitted_direct(m, fr, h.p, n, wo, entering);
+    surface_resolve(sf, r, h, u.w);
+    if (!material_is_delta(sf.m)) {
+      L += beta * whitted_direct(sf, h.p);
       break;
     }
     BsdfSample bs;
-    if (!material_sample(m, wo, entering, u.xyz, bs)) break;
+    if (!material_sample(sf.m, sf.wo, sf.entering, u.xyz, bs)) break;
     beta *= bs.weight;
-    vec3 wi = normalize(from_local(fr, bs.wi));
-    r = Ray(offset_origin(h.p, n, wi), wi);
+    vec3 wi = normalize(from_local(sf.fr, bs.wi));
+    if (!surface_sides_agree(sf, wi, bs.wi)) break;  // would cross the geometric surface
+    r = Ray(offset_origin(h.p, sf.n, wi), wi);
   }
   return L;
 }

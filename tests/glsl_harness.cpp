@@ -2,7 +2,7 @@
 
 #include "gl_context.h"
 #include "gpu/texture.h"
-#include "render/records.h"
+#include "core/records.h"
 
 namespace pt {
 

@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "glsl_harness.h"
-#include "render/sobol.h"
+#include "core/sobol.h"
 
 using namespace pt;
 

@@ -9,7 +9,7 @@
 #include "gl_context.h"
 #include "glsl_harness.h"
 #include "render/renderer.h"
-#include "render/tonemap.h"
+#include "core/tonemap.h"
 #include "scene/xml_loader.h"
 #include "test_paths.h"
 

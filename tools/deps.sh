@@ -11,7 +11,7 @@ want="${1:-test}"
 
 native_pkgs=(cmake ninja-build g++ ccache pkg-config libglm-dev libtinyxml2-dev libstb-dev
              catch2 libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libgbm1 libtinyobjloader-dev
-             libtinygltf-dev nlohmann-json3-dev clang libclang-rt-dev)
+             libtinygltf-dev nlohmann-json3-dev clang libclang-rt-dev python3)
 web_pkgs=(emscripten dpkg-dev)
 test_pkgs=(chromium nodejs npm)
 

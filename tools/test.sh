@@ -8,6 +8,8 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 start=$(date +%s)
 bash tools/deps.sh "${PT_SKIP_BROWSER:+native}"
+echo "== layers point down (includes under src/)"
+python3 tools/check_layers.py
 echo "== native build"
 cmake --preset native >/dev/null
 cmake --build --preset native

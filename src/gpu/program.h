@@ -10,7 +10,7 @@
 
 #include "gpu/gl.h"
 #include "gpu/gl_check.h"
-#include "shadergen/shadergen.h"
+#include "core/shader_source.h"
 
 namespace pt {
 

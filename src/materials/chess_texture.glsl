@@ -2,6 +2,7 @@
 // alternating color1 and color2 (the seed's "cubos" of two colours).
 #include "texture_common.glsl"
 bool delta_chess_texture(MaterialRec m) { return false; }
+vec3 albedo_chess_texture(MaterialRec m) { return m.tint; }
 vec3 eval_chess_texture(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) { pdf = 0.0; return vec3(0.0); }
 bool sample_chess_texture(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) { return false; }
 float chess_pattern(vec3 p, float scale) {

@@ -4,6 +4,7 @@
 uniform int u_dot_weight;
 
 bool delta_diffuse(MaterialRec m) { return false; }
+vec3 albedo_diffuse(MaterialRec m) { return m.tint; }
 
 vec3 eval_diffuse(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   if (wi.z <= 0.0 || wo.z <= 0.0) { pdf = 0.0; return vec3(0.0); }

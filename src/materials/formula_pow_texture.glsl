@@ -2,6 +2,7 @@
 // "barcode" stripes, |sin(x/s + sin(z/(2s)))|^8: thin lines of color1 on color2.
 #include "texture_common.glsl"
 bool delta_formula_pow_texture(MaterialRec m) { return false; }
+vec3 albedo_formula_pow_texture(MaterialRec m) { return m.tint; }
 vec3 eval_formula_pow_texture(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) { pdf = 0.0; return vec3(0.0); }
 bool sample_formula_pow_texture(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) { return false; }
 float formula_pow_pattern(vec3 p, float scale) {

@@ -7,6 +7,7 @@
 #include "fresnel.glsl"
 
 bool delta_fresnel_composite(MaterialRec m) { return true; }
+vec3 albedo_fresnel_composite(MaterialRec m) { return m.tint; }
 
 vec3 eval_fresnel_composite(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;

@@ -6,6 +6,7 @@
 #include "fresnel.glsl"
 
 bool delta_metal(MaterialRec m) { return m.roughness < 0.03; }  // alpha < 1e-3
+vec3 albedo_metal(MaterialRec m) { return m.tint; }
 
 float ggx_d(float nh, float a2) {
   float d = nh * nh * (a2 - 1.0) + 1.0;

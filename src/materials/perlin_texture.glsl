@@ -2,6 +2,7 @@
 // (Perlin 2002, quintic fade) summed over four octaves, mapping 0..1 to color1..color2.
 #include "texture_common.glsl"
 bool delta_perlin_texture(MaterialRec m) { return false; }
+vec3 albedo_perlin_texture(MaterialRec m) { return m.tint; }
 vec3 eval_perlin_texture(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) { pdf = 0.0; return vec3(0.0); }
 bool sample_perlin_texture(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) { return false; }
 float perlin_noise(vec3 q) {

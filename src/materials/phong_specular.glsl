@@ -4,6 +4,7 @@
 // Sampling draws cos^n(alpha) about the mirror direction, pdf = (n + 1) / (2 pi) cos^n;
 // directions below the surface are rejected (the pdf there is lost, not moved).
 bool delta_phong_specular(MaterialRec m) { return false; }
+vec3 albedo_phong_specular(MaterialRec m) { return m.tint; }
 
 vec3 eval_phong_specular(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;

@@ -1,6 +1,7 @@
 // Reflect: <Reflect color="r g b"/>: a perfect mirror (the seed's "Reflectivo"), a delta
 // lobe of weight tint (1 unless coloured or wrapped in <Attenuate>).
 bool delta_reflect(MaterialRec m) { return true; }
+vec3 albedo_reflect(MaterialRec m) { return m.tint; }
 
 vec3 eval_reflect(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;

@@ -6,6 +6,7 @@
 #include "refract.glsl"
 
 bool delta_smooth_dielectric(MaterialRec m) { return true; }
+vec3 albedo_smooth_dielectric(MaterialRec m) { return m.tint; }
 
 vec3 eval_smooth_dielectric(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;

@@ -22,6 +22,9 @@ uniform highp sampler2DArray u_maps;
 vec3 map_lookup(int layer, vec2 uv) { return textureLod(u_maps, vec3(fract(uv), float(layer)), 0.0).rgb; }
 
 bool delta_textured(MaterialRec m) { return false; }
+// The albedo a mode shows (sh_irradiance.glsl): both lobes' weights, (1 - s) rho + s (the
+// Phong lobe's albedo is 1 at normal incidence).
+vec3 albedo_textured(MaterialRec m) { return m.tint + m.color2; }
 
 float textured_specular_probability(MaterialRec m) {
   float d = m.tint.r + m.tint.g + m.tint.b, sp = m.color2.r + m.color2.g + m.color2.b;

@@ -4,6 +4,7 @@
 #include "refract.glsl"
 
 bool delta_transmit(MaterialRec m) { return true; }
+vec3 albedo_transmit(MaterialRec m) { return m.tint; }
 
 vec3 eval_transmit(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;

@@ -3,6 +3,7 @@
 // between cells (where the two nearest features are equally near), color1 the insides.
 #include "texture_common.glsl"
 bool delta_worley_texture(MaterialRec m) { return false; }
+vec3 albedo_worley_texture(MaterialRec m) { return m.tint; }
 vec3 eval_worley_texture(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) { pdf = 0.0; return vec3(0.0); }
 bool sample_worley_texture(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) { return false; }
 float worley_pattern(vec3 p, float scale) {

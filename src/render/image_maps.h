@@ -15,7 +15,7 @@
 #pragma once
 #include <vector>
 
-#include "render/records.h"
+#include "core/records.h"
 #include "scene/scene.h"
 
 namespace pt {

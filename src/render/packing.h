@@ -1,10 +1,10 @@
-// Scene -> the record buffers of render/records.h, including the BVH over every bounded
+// Scene -> the record buffers of core/records.h, including the BVH over every bounded
 // primitive (accel/bvh.h) and the primitives in its leaf order.
 #pragma once
 #include <memory>
 
 #include "accel/bvh.h"
-#include "render/records.h"
+#include "core/records.h"
 #include "scene/scene.h"
 
 namespace pt {

@@ -10,9 +10,9 @@
 #include "gpu/program.h"
 #include "gpu/texture.h"
 #include "gpu/texture_array.h"
-#include "render/render_mode.h"
+#include "core/render_mode.h"
 #include "render/sh.h"
-#include "render/tonemap.h"
+#include "core/tonemap.h"
 #include "scene/scene.h"
 #include "shadergen/shadergen.h"
 

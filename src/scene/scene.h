@@ -10,8 +10,8 @@
 #include <glm/glm.hpp>
 
 #include "scene/kinds.h"
-#include "render/render_mode.h"
-#include "render/tonemap.h"
+#include "core/render_mode.h"
+#include "core/tonemap.h"
 #include "scene/mesh.h"
 
 namespace pt {

@@ -5,8 +5,8 @@
 #include <set>
 #include <sstream>
 
-#include "render/records.h"
-#include "render/sobol.h"
+#include "core/records.h"
+#include "core/sobol.h"
 #include "shadergen/embedded.h"
 #include "shadergen/textured_gen.h"
 
@@ -114,40 +114,6 @@ ShaderSource resolve_includes(const std::string& root_text, const std::string& r
   return std::move(r.out);
 }
 
-std::string ShaderSource::map_log(const std::string& log) const {
-  // Drivers print "0:12:" (ANGLE), "0:12(7):" (Mesa, with a column) or "0(12) :" (NVIDIA):
-  // source 0 is files[0].
-  auto digits = [&](size_t i) {
-    size_t j = i;
-    while (j < log.size() && std::isdigit(static_cast<unsigned char>(log[j]))) ++j;
-    return j;
-  };
-  std::string out;
-  for (size_t i = 0; i < log.size();) {
-    const bool starts = std::isdigit(static_cast<unsigned char>(log[i])) &&
-                        (i == 0 || !std::isalnum(static_cast<unsigned char>(log[i - 1])));
-    const size_t a_end = starts ? digits(i) : i;
-    if (a_end > i && a_end - i <= 6 && a_end + 1 < log.size() && (log[a_end] == ':' || log[a_end] == '(')) {
-      const size_t b_end = digits(a_end + 1);
-      size_t after = b_end;
-      if (log[a_end] == '(' && after < log.size() && log[after] == ')') ++after;
-      if (log[a_end] == ':' && after < log.size() && log[after] == '(') {  // Mesa's column
-        after = digits(after + 1);
-        if (after < log.size() && log[after] == ')') ++after;
-      }
-      while (log[a_end] == '(' && after < log.size() && log[after] == ' ') ++after;
-      const size_t src = std::stoul(log.substr(i, a_end - i));
-      if (b_end > a_end + 1 && after < log.size() && log[after] == ':' && src < files.size()) {
-        out += files[src] + ":" + log.substr(a_end + 1, b_end - a_end - 1) + ":";
-        i = after + 1;
-        continue;
-      }
-    }
-    out += log[i++];
-  }
-  return out;
-}
-
 std::string generate_prelude(const Features& features) {
   Features f = features;
   if (f.has(ShapeKind::Mesh)) f.shapes |= 1u << int(ShapeKind::Triangle);  // mesh triangles use its intersection
@@ -204,14 +170,17 @@ std::string generate_prelude(const Features& features) {
   std::string delta = "bool material_is_delta(MaterialRec m) {\n";
   std::string eval = "vec3 material_eval(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {\n";
   std::string smp = "bool material_sample(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {\n";
+  std::string alb = "vec3 material_albedo(MaterialRec m) {\n";
   for (int i = 0; i < kNumMaterialKinds; ++i) {
     if (!f.has(MaterialKind(i))) continue;
     const std::string k = kMaterialKinds[i].glsl, cond = "  if (m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") ";
     delta += cond + "return delta_" + k + "(m);\n";
     eval += cond + "return eval_" + k + "(m, wo, wi, entering, pdf);\n";
     smp += cond + "return sample_" + k + "(m, wo, entering, u, s);\n";
+    alb += cond + "return albedo_" + k + "(m);\n";
   }
-  g += delta + "  return true;\n}\n" + eval + "  pdf = 0.0;\n  return vec3(0.0);\n}\n" + smp + "  return false;\n}\n";
+  g += delta + "  return true;\n}\n" + eval + "  pdf = 0.0;\n  return vec3(0.0);\n}\n" + smp + "  return false;\n}\n" + alb +
+       "  return m.tint;\n}\n";
   // Solid textures become a Diffuse record at the hit point: <name>_texture.glsl defines
   // <name>_pattern(p, scale) in [0, 1], the mix from tint (color1) to color2.
   std::string tex;

@@ -1,13 +1,14 @@
 // Assembles GLSL ES 3.00 programs from the features a scene uses: per kind, never per
-// object. Objects are data (see render/records.h); a program depends only on Features.
+// object. Objects are data (see core/records.h); a program depends only on Features.
 #pragma once
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "render/render_mode.h"
-#include "render/tonemap.h"
+#include "core/render_mode.h"
+#include "core/shader_source.h"
+#include "core/tonemap.h"
 #include "scene/scene.h"
 
 namespace pt {
@@ -33,15 +34,6 @@ struct Features {
   static Features of(const Scene& scene);
 };
 static_assert(kNumShapeKinds <= 15 && kNumMaterialKinds <= 24 && kNumRenderModes <= 64, "Features::key bits");
-
-// A program's text after include resolution, and the files that its "#line L S"
-// directives number S (0 is the generated text), so logs can name the snippet file.
-struct ShaderSource {
-  std::string text;
-  std::vector<std::string> files;
-  // Rewrites "0:12:" / "ERROR: 3:45:" locations in a compiler log to "file:line:".
-  std::string map_log(const std::string& log) const;
-};
 
 class ShaderGenError : public std::runtime_error {
  public:

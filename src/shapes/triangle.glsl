@@ -105,7 +105,7 @@ float pdf_light_triangle(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
 
 #ifdef HAS_MAT_TEXTURED
 // Image maps: the vertices' uv (XML uv0, uv1, uv2; default (0,0), (1,0), (0,1)) in a
-// UvRec (render/records.h), interpolated with the barycentric weights of p.
+// UvRec (core/records.h), interpolated with the barycentric weights of p.
 // barycentric_triangle is the hook for meshes: a mesh hit carries its weights and skips it.
 vec3 barycentric_triangle(ShapeRec s, vec3 p) {
   vec3 e1 = s.b - s.a, e2 = s.c - s.a, q = p - s.a;

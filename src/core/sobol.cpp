@@ -1,4 +1,4 @@
-#include "render/sobol.h"
+#include "core/sobol.h"
 
 namespace pt {
 

@@ -1,0 +1,82 @@
+// surface.glsl: the one surface step. Every render mode (integrator.glsl, whitted.glsl,
+// sh_irradiance.glsl) meets a hit through these two functions and differs only in what
+// it does next, so emission, composites, textures, normal maps and mesh shading normals
+// mean the same in every mode.
+//   surface_hit:     the shape and material records, the side the ray arrived on, the
+//                    geometric normal on that side, the emission towards the ray (front
+//                    side only) and whether the material ends the path (Emit+Absorb);
+//   surface_resolve: what shades there: a FresnelComposite's child (chosen with u_child),
+//                    a procedural texture's Diffuse record, a Textured record's values and
+//                    normal map, a mesh's interpolated normal; and the shading frame.
+// Split in two because the path tracer adds emission with an MIS weight and stops at the
+// bounce limit before it draws the random numbers that resolution uses.
+struct Surface {
+  ShapeRec s;
+  MaterialRec m;        // after surface_resolve: the record that shades (never a composite)
+  bool entering;        // the ray arrived on the side the outward normal points to
+  vec3 n;               // geometric unit normal on the side the ray came from
+  vec3 emission;        // radiance emitted back along the ray
+  bool absorbs;         // Emit+Absorb: nothing scatters, the path ends
+  Frame fr;             // shading frame: z is the shading normal on the ray's side
+  vec3 wo;              // unit direction to the viewer in fr
+  bool shading_normal;  // fr is not the geometric frame: sides are decided by n
+};
+
+Surface surface_hit(Ray r, Hit h) {
+  Surface sf;
+  sf.s = load_shape(h.id);
+  sf.m = load_material(sf.s.material);
+  sf.entering = dot(r.d, h.n) < 0.0;
+  sf.n = sf.entering ? h.n : -h.n;
+  sf.emission = sf.entering ? sf.m.emission : vec3(0.0);
+  sf.absorbs = false;
+#ifdef HAS_MAT_EMIT
+  sf.absorbs = sf.m.kind == MAT_EMIT;
+#endif
+  sf.fr = frame_from(sf.n);
+  sf.wo = to_local(sf.fr, -r.d);
+  sf.shading_normal = false;
+  return sf;
+}
+
+void surface_resolve(inout Surface sf, Ray r, Hit h, float u_child) {
+#ifdef HAS_MAT_FRESNEL_COMPOSITE
+  sf.m = resolve_fresnel_composite(sf.m, sf.wo.z, sf.entering, u_child);
+#endif
+#ifdef HAS_TEXTURES
+  sf.m = resolve_texture(sf.m, h.p);
+#endif
+  // A shading normal (a mesh's interpolated vertex normals, a normal map) sets the BSDF's
+  // frame; the geometric normal n still decides sides: a direction on different sides
+  // of the two carries nothing, and rays leave off the geometric surface.
+#ifdef HAS_SHAPE_MESH
+  if (sf.s.kind == SHAPE_MESH) {
+    vec3 ns;
+    vec2 uv_unused;
+    if (mesh_attributes(h.prim, h.p, ns, uv_unused) && dot(ns, ns) > 0.0) {
+      ns = dot(ns, sf.n) < 0.0 ? -ns : ns;  // onto the side the ray came from, as n
+      if (dot(ns, -r.d) > 0.0) {  // a normal facing away from the viewer is not used
+        sf.fr = frame_from(ns);
+        sf.wo = to_local(sf.fr, -r.d);
+        sf.shading_normal = true;
+      }
+    }
+  }
+#endif
+#ifdef HAS_MAT_TEXTURED
+  // Image maps: the record's values at the hit, and the shading frame of its normal map
+  // (whose side tests use the geometric normal: see textured_resolve.glsl).
+  if (sf.m.kind == MAT_TEXTURED) {
+    sf.shading_normal = true;
+    sf.m = resolve_textured(sf.m, sf.s, h, sf.n, -r.d, sf.fr);
+    sf.wo = to_local(sf.fr, -r.d);
+  }
+#endif
+}
+
+// Whether world direction w (unit, leaving the surface) and its shading-frame form wl lie
+// on the same side of the geometric and the shading surface; a direction that does not
+// carries no light.
+bool surface_sides_agree(Surface sf, vec3 w, vec3 wl) {
+  return !sf.shading_normal || (dot(w, sf.n) > 0.0) == (wl.z > 0.0);
+}
