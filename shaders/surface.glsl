@@ -9,18 +9,10 @@
 //                    a procedural texture's Diffuse record, a Textured record's values and
 //                    normal map, a mesh's interpolated normal; and the shading frame.
 // Split in two because the path tracer adds emission with an MIS weight and stops at the
-// bounce limit before it draws the random numbers that resolution uses.
-struct Surface {
-  ShapeRec s;
-  MaterialRec m;        // after surface_resolve: the record that shades (never a composite)
-  bool entering;        // the ray arrived on the side the outward normal points to
-  vec3 n;               // geometric unit normal on the side the ray came from
-  vec3 emission;        // radiance emitted back along the ray
-  bool absorbs;         // Emit+Absorb: nothing scatters, the path ends
-  Frame fr;             // shading frame: z is the shading normal on the ray's side
-  vec3 wo;              // unit direction to the viewer in fr
-  bool shading_normal;  // fr is not the geometric frame: sides are decided by n
-};
+// bounce limit before it draws the random numbers that resolution uses. What a kind does
+// here is its own (materials/<kind>.h and .glsl): the generator calls each composite
+// kind's choose_<kind> (resolve_composites) and each kind's resolve_hit_<kind>
+// (resolve_hit); struct Surface is in surface_types.glsl, so the kinds' snippets see it.
 
 Surface surface_hit(Ray r, Hit h) {
   Surface sf;
@@ -40,12 +32,7 @@ Surface surface_hit(Ray r, Hit h) {
 }
 
 void surface_resolve(inout Surface sf, Ray r, Hit h, float u_child) {
-#ifdef HAS_MAT_FRESNEL_COMPOSITE
-  sf.m = resolve_fresnel_composite(sf.m, sf.wo.z, sf.entering, u_child);
-#endif
-#ifdef HAS_TEXTURES
-  sf.m = resolve_texture(sf.m, h.p);
-#endif
+  sf.m = resolve_composites(sf.m, sf.wo.z, sf.entering, u_child);
   // A shading normal (a mesh's interpolated vertex normals, a normal map) sets the BSDF's
   // frame; the geometric normal n still decides sides: a direction on different sides
   // of the two carries nothing, and rays leave off the geometric surface.
@@ -63,15 +50,8 @@ void surface_resolve(inout Surface sf, Ray r, Hit h, float u_child) {
     }
   }
 #endif
-#ifdef HAS_MAT_TEXTURED
-  // Image maps: the record's values at the hit, and the shading frame of its normal map
-  // (whose side tests use the geometric normal: see textured_resolve.glsl).
-  if (sf.m.kind == MAT_TEXTURED) {
-    sf.shading_normal = true;
-    sf.m = resolve_textured(sf.m, sf.s, h, sf.n, -r.d, sf.fr);
-    sf.wo = to_local(sf.fr, -r.d);
-  }
-#endif
+  // What shades at the hit: a texture's values there (a normal map may set the frame).
+  resolve_hit(sf, r, h);
 }
 
 // Whether world direction w (unit, leaving the surface) and its shading-frame form wl lie

@@ -1,11 +1,11 @@
 // texture_common.glsl: what the procedural (solid) textures share. A texture kind is a
-// Lambertian surface whose albedo varies in space: the integrator turns it into a Diffuse
-// record at the hit point (resolve_texture), so it shades, light-samples and passes the
-// furnace exactly as Diffuse does.
-MaterialRec textured_diffuse(MaterialRec m, float t) {
+// Lambertian surface whose albedo varies in space: the surface step turns it into a
+// Diffuse record at the hit point (resolve_hit_<kind>, materials/solid_texture.h), so it
+// shades, light-samples and passes the furnace exactly as Diffuse does.
+MaterialRec textured_diffuse(MaterialRec m, vec3 color2, float t) {
   MaterialRec d = m;
   d.kind = MAT_DIFFUSE;
-  d.tint = mix(m.tint, m.color2, clamp(t, 0.0, 1.0));
+  d.tint = mix(m.tint, color2, clamp(t, 0.0, 1.0));
   return d;
 }
 

@@ -22,8 +22,7 @@ Scene wall_scene(float aperture, float focal_distance) {
   s.camera.aperture = aperture;
   s.camera.focal_distance = focal_distance;
   s.environment.color = glm::vec3(0.0f);
-  Material white, lamp;
-  lamp.kind = MaterialKind::Emit;
+  Material white, lamp = Emit{};
   lamp.emission = glm::vec3(40.0f);
   add_box(s, glm::vec3(-50, -50, -11), glm::vec3(50, 50, -10), add_material(s, white));
   add_sphere(s, glm::vec3(1.0f, 1.5f, -9.0f), 0.25f, add_material(s, lamp));
@@ -128,8 +127,7 @@ TEST_CASE("field of view: 45 degrees vertically, the seed's; an emitter spans th
   CHECK(s.camera.fov_y == 45.0f);
   s.camera = camera_looking_down_z(glm::vec3(0.0f));
   s.environment.color = glm::vec3(0.0f);
-  Material lamp;
-  lamp.kind = MaterialKind::Emit;
+  Material lamp = Emit{};
   lamp.emission = glm::vec3(1.0f);
   const float half = 10.0f * std::tan(glm::radians(22.5f)) * 0.5f;
   add_box(s, glm::vec3(-100.0f, -half, -11.0f), glm::vec3(100.0f, half, -10.0f), add_material(s, lamp));

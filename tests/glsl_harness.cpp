@@ -1,10 +1,38 @@
 #include "glsl_harness.h"
 
+#include <cstdio>
+
 #include "gl_context.h"
 #include "gpu/texture.h"
 #include "core/records.h"
 
 namespace pt {
+
+std::string glsl_material(const Material& m, const char* name) {
+  Scene s;
+  s.materials.push_back(m);
+  const PackedScene p = pack_values(s);
+  char buf[64];
+  auto num = [&](float v) {
+    std::snprintf(buf, sizeof buf, "%.9g", double(v));
+    std::string t = buf;
+    if (t.find_first_of(".en") == std::string::npos) t += ".0";  // a GLSL float literal
+    return t;
+  };
+  std::string g = "MaterialRec " + std::string(name) + "() {\n  MaterialRec m;\n";
+  for (const Field& f : material_layout().fields) {
+    if (f.type[0] == 'i') {
+      g += "  m." + std::string(f.name) + " = " + std::to_string(int(p.materials.get(0, f))) + ";\n";
+    } else if (f.width == 1) {
+      g += "  m." + std::string(f.name) + " = " + num(p.materials.get(0, f)) + ";\n";
+    } else {
+      const glm::vec3 v = p.materials.get3(0, f);
+      g += "  m." + std::string(f.name) + " = vec3(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ");\n";
+    }
+  }
+  for (const char* l : material_glsl().locals) g += "  m." + std::string(l) + " = 0.0;\n";
+  return g + "  return m;\n}\n";
+}
 
 Features all_features() {
   Features f;

@@ -20,6 +20,11 @@ namespace pt {
 
 Features all_features();
 
+// GLSL defining `MaterialRec <name>()` that returns material m as the production packer
+// writes it (render/packing.h) and the shader loads it: kind, tint, emission and the
+// kind's payload slots (the hit slots zero).
+std::string glsl_material(const Material& m, const char* name = "make_material");
+
 class GlslKernel {
  public:
   explicit GlslKernel(const std::string& body, const Features& f = all_features());

@@ -168,7 +168,7 @@ TEST_CASE("a glTF base-colour texture renders with its colours where its uv put 
         "<Mesh src=\"../assets/models/" + std::string(file) + "\"/></Objects></SceneLevel>",
         repo_path("scenes/textured-quad-test.xml"));
     REQUIRE(s.materials.size() == 1);
-    CHECK(s.materials[0].kind == MaterialKind::Textured);
+    CHECK(s.materials[0].kind() == MaterialKind::Textured);
     if (std::string(file) == "textured-quad.gltf") CHECK(s.files.back() == repo_path("scenes/../assets/models/textured-quad.png"));
     const int n = 32;
     const RenderResult r = render_scene(s, n, n, 16);

@@ -125,8 +125,7 @@ TEST_CASE("Whitted: the lit plane seen in a mirror, and nothing beyond the bounc
   test_gl();
   const Analytic a{glm::vec3(0.3f, 2.0f, -0.2f), 0.5f, 10.0f, true, -3.0f};
   Scene s = sphere_light_over_plane(a.center, a.radius, a.L);
-  Material mirror;
-  mirror.kind = MaterialKind::Reflect;
+  const Material mirror = Reflect{};
   Shape m;
   m.kind = ShapeKind::Plane;
   m.a = glm::vec3(0, 0, 1);
@@ -144,13 +143,8 @@ TEST_CASE("Whitted: furnaces through delta surfaces and direct light from a cons
   // A sphere alone in a white environment: every ray through a smooth dielectric, a
   // Transmit or a mirror escapes with its weight intact (1), and a Lambertian sphere's
   // direct light from the unoccluded environment is its albedo.
-  Material glass, diamond, transmit, mirror, half;
-  glass.kind = diamond.kind = MaterialKind::SmoothDielectric;
-  glass.inner_ior = 1.5f;
-  diamond.inner_ior = 2.4f;
-  transmit.kind = MaterialKind::Transmit;
-  transmit.inner_ior = 1.33f;
-  mirror.kind = MaterialKind::Reflect;
+  Material glass = SmoothDielectric{.ior = 1.5f}, diamond = SmoothDielectric{.ior = 2.4f}, transmit = Transmit{.innerIor = 1.33f},
+           mirror = Reflect{}, half;
   half.tint = glm::vec3(0.5f);
   struct C {
     const char* name;
@@ -175,8 +169,7 @@ TEST_CASE("Whitted: shadow rays: in a closed room, neither the environment nor a
   Material wall;
   Scene s = closed_room(wall);
   s.environment.color = glm::vec3(1.0f);
-  Material emit;
-  emit.kind = MaterialKind::Emit;
+  Material emit = Emit{};
   emit.emission = glm::vec3(10.0f);
   add_sphere(s, glm::vec3(0.0f, 3.0f, 0.0f), 0.5f, add_material(s, emit));  // above the room's ceiling
   s.camera.pitch = -60.0f;  // the floor, which faces the light

@@ -182,3 +182,56 @@ TEST_CASE("selection edits re-upload the scene and never recompile", "[gpu][pick
   INFO("mean before " << before.x << " " << before.y << " " << before.z << ", after " << after.x << " " << after.y << " " << after.z);
   CHECK(after.y / after.x > 1.2 * before.y / before.x);  // the floor is no longer red
 }
+
+// The selection panel's fields come from each kind's stem (materials/<kind>.h: edit): a
+// recording editor sees what the panel would show, and an edit through it reaches the
+// packed record (the panel used to edit an unused IOR slot of a SmoothDielectric).
+TEST_CASE("selection panel: each material kind offers its own fields, and they reach the record", "[picking]") {
+  struct Recorder {
+    std::vector<std::string> labels;
+    float set_to = -1.0f;  // sliders write this when >= 0
+    bool color(const char* l, glm::vec3&) { return labels.emplace_back(l), false; }
+    bool slider(const char* l, float& v, float, float) {
+      labels.emplace_back(l);
+      if (set_to < 0.0f) return false;
+      v = set_to;
+      return true;
+    }
+    bool drag3(const char* l, glm::vec3&, float, float, float) { return labels.emplace_back(l), false; }
+  };
+  auto fields = [](Material m) {
+    Recorder r;
+    edit_material(m, r);
+    std::string s;
+    for (const std::string& l : r.labels) s += (s.empty() ? "" : ", ") + l;
+    return s;
+  };
+  CHECK(fields(Diffuse{}) == "colour");
+  CHECK(fields(Metal{}) == "colour, roughness, ior");
+  CHECK(fields(SmoothDielectric{}) == "colour, ior");
+  CHECK(fields(Transmit{}) == "colour, ior");
+  CHECK(fields(Emit{}) == "emission");
+  CHECK(fields(FresnelComposite{}) == "");
+  CHECK(fields(ChessTexture{}) == "colour, colour 2");
+  // Every kind answers (the visit covers the list).
+  for (int k = 0; k < kNumMaterialKinds; ++k) {
+    const Scene one = load_scene_text(std::string("<SceneLevel><Camera position=\"0 0 5\"/><Objects><Sphere center=\"0 0 0\" radius=\"1\">") +
+                                          kMaterialTraits[k].example + "</Sphere></Objects></SceneLevel>",
+                                      repo_path("assets/textures") + "/x.xml");
+    Material m = one.materials.back();
+    REQUIRE(int(m.kind()) == k);
+    Recorder r;
+    edit_material(m, r);
+    INFO(kMaterialKinds[k].xml);
+    CHECK((k == int(MaterialKind::FresnelComposite) || !r.labels.empty()));
+  }
+  // A slider edit lands in the record the shader reads: the dielectric's eta_inner.
+  Scene s;
+  s.materials.push_back(SmoothDielectric{.ior = 1.5f});
+  Recorder set;
+  set.set_to = 2.0f;
+  CHECK(edit_material(s.materials[0], set));
+  const PackedScene p = pack_values(s);
+  const int eta_inner_slot = kind_slot(SmoothDielectric::kFields, int(SmoothDielectric::rec::eta_inner));
+  CHECK(p.materials.get(0, *material_rec::kPayload[eta_inner_slot]) == 2.0f);
+}

@@ -62,8 +62,7 @@ inline Scene sphere_light_over_plane(glm::vec3 center, float radius, float L) {
   s.camera.yaw = 90.0f;
   s.camera.pitch = -60.0f;
   s.environment.color = glm::vec3(0.0f);
-  Material white, emit;
-  emit.kind = MaterialKind::Emit;
+  Material white, emit = Emit{};
   emit.emission = glm::vec3(L);
   Shape plane;
   plane.kind = ShapeKind::Plane;

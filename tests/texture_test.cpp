@@ -68,10 +68,11 @@ TEST_CASE("a one-colour texture renders exactly as Diffuse of that colour", "[gp
 TEST_CASE("texture elements are strict", "[loader][texture]") {
   const std::string h = "<SceneLevel><Camera position=\"0 0 5\"/><Objects>\n<Sphere center=\"0 0 0\" radius=\"1\">";
   const Scene s = load_scene_text(h + "<WorleyTexture color1=\"1 0 0\" color2=\"0 0 1\" scale=\"3\"/></Sphere></Objects></SceneLevel>", "x.xml");
-  CHECK(s.materials[0].kind == MaterialKind::WorleyTexture);
-  CHECK(s.materials[0].tint == glm::vec3(1, 0, 0));
-  CHECK(s.materials[0].color2 == glm::vec3(0, 0, 1));
-  CHECK(s.materials[0].scale == 3.0f);
+  REQUIRE(s.materials[0].kind() == MaterialKind::WorleyTexture);
+  const WorleyTexture& w = *s.materials[0].as<WorleyTexture>();
+  CHECK(w.color1 == glm::vec3(1, 0, 0));
+  CHECK(w.color2 == glm::vec3(0, 0, 1));
+  CHECK(w.scale == 3.0f);
   try {
     load_scene_text(h + "<PerlinTexture scale=\"0\"/></Sphere></Objects></SceneLevel>", "x.xml");
     FAIL("loaded");

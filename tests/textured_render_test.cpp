@@ -150,17 +150,17 @@ TEST_CASE("white furnace: Textured with a white diffuse map returns 1, with spec
 }
 
 TEST_CASE("Textured mixture albedo: (1 - s) rho + s A_n(theta_o), sampled weights", "[gpu][textured]") {
-  // The record as resolve_textured leaves it: tint = (1 - s) rho, color2 = s.
+  // The record as resolve_textured leaves it: tint = (1 - s) rho, the hit field spec = s.
   const double s = 0.4, n = 30;
   for (double cos_o : {1.0, 0.5, 0.1}) {
     char setup[512];
     std::snprintf(setup, sizeof setup,
                   "const vec3 WO = vec3(%.9f, 0.0, %.9f);\nvec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 77u), 0u);\n"
-                  "  MaterialRec m; m.kind = MAT_TEXTURED; m.tint = vec3(%.6f); m.color2 = vec3(%.6f); m.exponent = %.1f;\n"
+                  "  MaterialRec m = packed_textured();\n  TexturedRec q = textured_rec(m);\n  q.spec = vec3(%.6f);\n  m = with_textured_rec(m, q);\n"
                   "  BsdfSample b;\n  if (!material_sample(m, WO, true, vec3(rand01(), rand01(), rand01()), b)) return vec4(0.0);\n"
                   "  return vec4(b.weight, 1.0);\n}\n",
-                  std::sqrt(1 - cos_o * cos_o), cos_o, 1 - s, s, n);
-    GlslKernel k(setup);
+                  std::sqrt(1 - cos_o * cos_o), cos_o, s);
+    GlslKernel k(glsl_material(Material(Textured{.n = float(n)}, glm::vec3(float(1 - s))), "packed_textured") + setup);
     k.program().use();
     k.program().set("u_dot_weight", 1);
     const int N = 1000000;

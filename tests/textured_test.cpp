@@ -240,9 +240,10 @@ TEST_CASE("Textured: a file that cannot be read is an error naming it and the li
                                   "<Triangle v0=\"0 0 0\" v1=\"1 0 0\" v2=\"0 1 0\" uv0=\"0.5 0.5\" uv2=\"1, 2\"><Diffuse/></Triangle></Objects></SceneLevel>",
                                   dir + "/x.xml");
   REQUIRE(s.images.size() == 2);  // white.png once as colour (diffuse, specular), once as a normal map
-  CHECK(s.materials[0].diffuse_map == s.materials[0].specular_map);
-  CHECK(s.materials[0].uv_scale == glm::vec2(2, 3));
-  CHECK(s.materials[0].uv_offset == glm::vec2(0.5f, 0.25f));
+  REQUIRE(s.materials[0].as<Textured>());
+  CHECK(s.materials[0].as<Textured>()->diffuse == s.materials[0].as<Textured>()->specular);
+  CHECK(s.materials[0].as<Textured>()->uvScale == glm::vec2(2, 3));
+  CHECK(s.materials[0].as<Textured>()->uvOffset == glm::vec2(0.5f, 0.25f));
   CHECK(s.shapes[1].uv[0] == glm::vec2(0.5f, 0.5f));
   CHECK(s.shapes[1].uv[1] == glm::vec2(1.0f, 0.0f));
   CHECK(s.shapes[1].uv[2] == glm::vec2(1.0f, 2.0f));

@@ -55,16 +55,10 @@ TEST_CASE("white furnace: energy-conserving materials return the environment", "
     Material m;
     double expect;
   };
-  Material diffuse, half, glass, transmit, glass_tir, mirror;
-  mirror.kind = MaterialKind::Reflect;
+  Material diffuse, half, glass = SmoothDielectric{.ior = 1.5f}, transmit = Transmit{.outerIor = 1.0f, .innerIor = 1.33f},
+                    mirror = Reflect{};
   half.tint = glm::vec3(0.5f);
-  glass.kind = MaterialKind::SmoothDielectric;
-  glass.inner_ior = 1.5f;
-  glass_tir = glass;
-  glass_tir.inner_ior = 2.4f;  // diamond: much total internal reflection inside
-  transmit.kind = MaterialKind::Transmit;
-  transmit.outer_ior = 1.0f;
-  transmit.inner_ior = 1.33f;
+  Material glass_tir = SmoothDielectric{.ior = 2.4f};  // diamond: much total internal reflection inside
   for (const C& c : {C{"furnace: diffuse albedo 1 -> 1", diffuse, 1.0}, C{"furnace: diffuse albedo 0.5 -> 0.5", half, 0.5},
                      C{"furnace: smooth dielectric n=1.5 -> 1", glass, 1.0},
                      C{"furnace: smooth dielectric n=2.4 -> 1", glass_tir, 1.0},
@@ -79,21 +73,12 @@ TEST_CASE("white furnace: a Fresnel composite of a mirror and a refraction retur
   test_gl();
   RenderSettings st;
   st.max_bounces = 64;
-  Material mirror, refract, composite;
-  mirror.kind = MaterialKind::Reflect;
-  refract.kind = MaterialKind::Transmit;
-  refract.inner_ior = 1.5f;
-  composite.kind = MaterialKind::FresnelComposite;
-  composite.outer_ior = 1.0f;
-  composite.inner_ior = 1.5f;
-  composite.child_a = 0;
-  composite.child_b = 1;
+  const Material mirror = Reflect{}, refract = Transmit{.innerIor = 1.5f};
+  const Material composite = FresnelComposite{.na = 1.0f, .nb = 1.5f, .reflective = 0, .transmissive = 1};
   const RenderResult r = render_scene(furnace(composite, {mirror, refract}), 64, 64, 64, st);
   check_close("furnace: FresnelComposite(Reflect, Transmit) -> 1", region_mean(r, 24, 24, 40, 40), 1.0, &r);
   // Against the equivalent smooth dielectric, pixel region by pixel region.
-  Material glass;
-  glass.kind = MaterialKind::SmoothDielectric;
-  glass.inner_ior = 1.5f;
+  const Material glass = SmoothDielectric{.ior = 1.5f};
   const RenderResult g = render_scene(furnace(glass), 64, 64, 64, st);
   const Estimate a = region_mean(r, 20, 20, 44, 44), b = region_mean(g, 20, 20, 44, 44);
   INFO("composite " << a.mean << " vs dielectric " << b.mean);
@@ -140,8 +125,7 @@ void check_sphere_lights(const std::vector<SphereLight>& lights, const char* wha
   test_gl();
   Scene s = sphere_light_over_plane(lights[0].center, lights[0].radius, lights[0].L);
   for (size_t i = 1; i < lights.size(); ++i) {
-    Material emit;
-    emit.kind = MaterialKind::Emit;
+    Material emit = Emit{};
     emit.emission = glm::vec3(lights[i].L);
     add_sphere(s, lights[i].center, lights[i].radius, add_material(s, emit));
   }

@@ -268,7 +268,7 @@ void App::draw_selection_panel(int fb_w) {
   Shape& sh = scene_.shapes[size_t(selected_)];
   Material& m = scene_.materials[size_t(sh.material)];
   ImGui::Text("%s #%d (line %d)", info(sh.kind).xml, selected_, sh.line);
-  ImGui::Text("material: %s", info(m.kind).xml);
+  ImGui::Text("material: %s", info(m.kind()).xml);
   const float speed = 0.005f * std::max(1.0f, glm::length(renderer_->camera().position));
   bool edited = false, moved = false;
   glm::vec3 p = shape_position(sh);
@@ -283,11 +283,12 @@ void App::draw_selection_panel(int fb_w) {
       edited = moved = true;
     }
   }
-  const MaterialFields f = material_fields(m.kind);
-  if (f.tint) edited |= ImGui::ColorEdit3("colour", &m.tint.x);
-  if (m.kind == MaterialKind::Emit) edited |= ImGui::DragFloat3("emission", &m.emission.x, 0.1f, 0.0f, 1e4f);
-  if (f.roughness) edited |= ImGui::SliderFloat("roughness", &m.glossiness, 0.0f, 1.0f);
-  if (f.ior) edited |= ImGui::SliderFloat("ior", m.kind == MaterialKind::Transmit ? &m.inner_ior : &m.ior.x, 1.0f, 3.0f);
+  struct ImGuiEditor {
+    bool color(const char* label, glm::vec3& c) { return ImGui::ColorEdit3(label, &c.x); }
+    bool slider(const char* label, float& v, float lo, float hi) { return ImGui::SliderFloat(label, &v, lo, hi); }
+    bool drag3(const char* label, glm::vec3& v, float speed, float lo, float hi) { return ImGui::DragFloat3(label, &v.x, speed, lo, hi); }
+  } editor;
+  edited |= edit_material(m, editor);  // the fields its kind offers
   if (sh.light >= 0) ImGui::TextDisabled("the scene's light %d", sh.light);
   ImGui::PopItemWidth();
   ImGui::End();

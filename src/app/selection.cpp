@@ -2,14 +2,6 @@
 
 namespace pt {
 
-MaterialFields material_fields(MaterialKind k) {
-  MaterialFields f;
-  f.tint = k != MaterialKind::Emit && k != MaterialKind::FresnelComposite;  // a composite's children carry the tint
-  f.roughness = k == MaterialKind::Metal;
-  f.ior = k == MaterialKind::Metal || k == MaterialKind::SmoothDielectric || k == MaterialKind::Transmit;
-  return f;
-}
-
 glm::vec3 shape_position(const Shape& s) {
   switch (s.kind) {
     case ShapeKind::Sphere: return s.a;

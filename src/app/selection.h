@@ -2,19 +2,30 @@
 // of the Scene (the panel calls these, then re-uploads the scene: the kinds do not
 // change, so the cached program is reused and nothing recompiles).
 #pragma once
+#include <type_traits>
+#include <variant>
+
 #include <glm/glm.hpp>
 
 #include "scene/scene.h"
 
 namespace pt {
 
-// What the panel offers for a material kind.
-struct MaterialFields {
-  bool tint = false;       // Material::tint (the colour; Emit: the emitted radiance instead)
-  bool roughness = false;  // Metal: glossiness 0..1
-  bool ior = false;        // Metal, SmoothDielectric: ior.x; Transmit: inner_ior
-};
-MaterialFields material_fields(MaterialKind k);
+// The panel's fields for a material: what its kind's stem offers (materials/<kind>.h:
+// edit), shown through editor `e`, which has
+//   bool color(const char* label, glm::vec3&);
+//   bool slider(const char* label, float&, float lo, float hi);
+//   bool drag3(const char* label, glm::vec3&, float speed, float lo, float hi);
+// (the panel's is ImGui's; tests record the calls). True when a value changed.
+template <class E>
+bool edit_material(Material& m, E& e) {
+  return std::visit(
+      [&](auto& k) -> bool {
+        if constexpr (std::is_same_v<std::decay_t<decltype(k)>, std::monostate>) return false;
+        else return k.edit(e, m);
+      },
+      m.params);
+}
 
 // The point the panel shows as the object's position: a sphere's centre, a box's centre,
 // a triangle's centroid, a plane's point closest to the origin.

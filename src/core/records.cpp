@@ -9,12 +9,26 @@ namespace pt {
 #define PT_LAYOUT_DEF(name, texels, fields)                                           \
   const RecordLayout& name##_layout() {                                               \
     using namespace name##_rec;                                                       \
-    static const RecordLayout l{#name, kTexels, {fields(PT_FIELD_LIST)}};             \
+    static const RecordLayout l{#name, kTexels, {fields(PT_FIELD_LIST)}, {}};         \
     return l;                                                                         \
   }
 PT_RECORDS(PT_LAYOUT_DEF)
 #undef PT_LAYOUT_DEF
 #undef PT_FIELD_LIST
+
+namespace {
+// The material record's GLSL struct with its hit slots (see PT_MATERIAL_RECORD).
+RecordLayout material_glsl_layout() {
+  RecordLayout l = material_layout();
+  l.locals = {"p9", "p10", "p11"};
+  return l;
+}
+}  // namespace
+
+const RecordLayout& material_glsl() {
+  static const RecordLayout l = material_glsl_layout();
+  return l;
+}
 
 std::string glsl_record(const RecordLayout& l) {
   std::string cap = l.name;
@@ -23,6 +37,7 @@ std::string glsl_record(const RecordLayout& l) {
   std::string s = "uniform highp sampler2D " + tex + ";\n";
   s += "struct " + cap + "Rec {";
   for (const Field& f : l.fields) s += " " + std::string(f.type) + " " + f.name + ";";
+  for (const char* f : l.locals) s += " float " + std::string(f) + ";";
   s += " };\n";
   s += cap + "Rec load_" + l.name + "(int i) {\n";
   s += "  int base = i * " + std::to_string(l.texels) + ";\n";
@@ -36,6 +51,7 @@ std::string glsl_record(const RecordLayout& l) {
     const bool is_int = f.type[0] == 'i';
     s += "  r." + std::string(f.name) + " = " + (is_int ? "int(" + src + ")" : src) + ";\n";
   }
+  for (const char* f : l.locals) s += "  r." + std::string(f) + " = 0.0;\n";
   s += "  return r;\n}\n";
   return s;
 }

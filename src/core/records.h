@@ -17,19 +17,16 @@
   F(vec3, b, 2, 0)                                           \
   F(vec3, c, 3, 0)
 
-#define PT_MATERIAL_RECORD(F)                                               \
-  F(int, kind, 0, 0) F(float, roughness, 0, 1) F(float, sampling, 0, 2) F(int, child_b, 0, 3) \
-  F(vec3, tint, 1, 0) F(float, ior_n, 1, 3)                                 \
-  F(vec3, emission, 2, 0) F(float, ior_k, 2, 3)                             \
-  F(float, eta_outer, 3, 0) F(float, eta_inner, 3, 1) F(float, exponent, 3, 2) F(int, child_a, 3, 3) \
-  F(vec3, color2, 3, 0) F(float, scale, 0, 1)                              \
-  F(int, map_diffuse, 0, 3) F(int, map_specular, 3, 3) F(int, map_normal, 1, 3) \
-  F(vec2, uv_scale, 3, 0) F(vec2, uv_offset, 0, 1)
-
-// Fields may alias one slot when no kind uses both: procedural textures keep their second
-// colour in eta_outer/eta_inner/exponent and their scale in roughness; Textured keeps its
-// map layers (-1: none) in child_b/child_a/ior_n and its uv transform in eta_outer/eta_inner
-// and roughness/sampling (its Phong exponent is `exponent`).
+// A material: a header every kind shares (kind, tint: the enclosing Attenuate colours
+// times the kind's own colour, emission) and nine payload floats p0..p8 that belong to
+// the kind: each kind lays out its own fields over them (materials/material.h,
+// PT_KIND_RECORD), so no two kinds share a slot by hand. The GLSL struct has three more
+// floats, p9..p11, that the kind may fill at the hit (its hit fields; zero when loaded).
+#define PT_MATERIAL_RECORD(F)                                                          \
+  F(int, kind, 0, 0) F(float, p0, 0, 1) F(float, p1, 0, 2) F(float, p2, 0, 3)           \
+  F(vec3, tint, 1, 0) F(float, p3, 1, 3)                                                \
+  F(vec3, emission, 2, 0) F(float, p4, 2, 3)                                            \
+  F(float, p5, 3, 0) F(float, p6, 3, 1) F(float, p7, 3, 2) F(float, p8, 3, 3)
 
 // Texture coordinates of a Triangle's vertices, one record per shape (indexed like the
 // shape records), packed and bound only for scenes with a Textured material.
@@ -85,6 +82,7 @@ struct RecordLayout {
   const char* name;  // GLSL: struct <Name>Rec, load_<name>(int), sampler u_<name>_data
   int texels;
   std::vector<Field> fields;
+  std::vector<const char*> locals;  // GLSL-only float fields, zero when loaded
 };
 
 #define PT_FIELD_CONST(t, n, tex, comp) inline constexpr Field n{#t, #n, tex, comp, glsl_width(#t)};
@@ -108,6 +106,17 @@ struct RecordLayout {
   const RecordLayout& name##_layout();
 PT_RECORDS(PT_RECORD_DECL)
 #undef PT_RECORD_DECL
+
+namespace material_rec {
+// The payload in slot order, and how many slots the GLSL struct has in all (p9..p11 are
+// hit fields: never packed).
+inline constexpr const Field* kPayload[] = {&p0, &p1, &p2, &p3, &p4, &p5, &p6, &p7, &p8};
+inline constexpr int kPayloadSlots = 9;
+inline constexpr int kGlslSlots = 12;
+}  // namespace material_rec
+
+// The material record as the shader sees it: material_layout() and the hit slots.
+const RecordLayout& material_glsl();
 
 // GLSL for one layout: the struct, the sampler uniform and the loader function.
 std::string glsl_record(const RecordLayout& layout);

@@ -9,3 +9,7 @@ float chess_pattern(vec3 p, float scale) {
   ivec3 c = ivec3(floor(p / scale));
   return float((c.x + c.y + c.z) & 1);
 }
+void resolve_hit_chess_texture(inout Surface sf, Ray r, Hit h) {
+  ChessTextureRec q = chess_texture_rec(sf.m);
+  sf.m = textured_diffuse(sf.m, q.color2, chess_pattern(h.p, q.scale));
+}

@@ -8,3 +8,7 @@ bool sample_formula_pow_texture(MaterialRec m, vec3 wo, bool entering, vec3 u, o
 float formula_pow_pattern(vec3 p, float scale) {
   return 1.0 - pow(abs(sin(p.x / scale + sin(p.z / (2.0 * scale)))), 8.0);
 }
+void resolve_hit_formula_pow_texture(inout Surface sf, Ray r, Hit h) {
+  FormulaPowTextureRec q = formula_pow_texture_rec(sf.m);
+  sf.m = textured_diffuse(sf.m, q.color2, formula_pow_pattern(h.p, q.scale));
+}

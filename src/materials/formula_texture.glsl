@@ -9,3 +9,7 @@ float formula_pattern(vec3 p, float scale) {
   vec3 q = p / scale;
   return 0.5 + 0.5 * sin(q.x) * sin(q.y) * sin(q.z);
 }
+void resolve_hit_formula_texture(inout Surface sf, Ray r, Hit h) {
+  FormulaTextureRec q = formula_texture_rec(sf.m);
+  sf.m = textured_diffuse(sf.m, q.color2, formula_pattern(h.p, q.scale));
+}

@@ -5,7 +5,7 @@
 // both exact: 1 = visible normals of GGX (Heitz 2018), 0 = cosine-weighted hemisphere.
 #include "fresnel.glsl"
 
-bool delta_metal(MaterialRec m) { return m.roughness < 0.03; }  // alpha < 1e-3
+bool delta_metal(MaterialRec m) { return metal_rec(m).roughness < 0.03; }  // alpha < 1e-3
 vec3 albedo_metal(MaterialRec m) { return m.tint; }
 
 float ggx_d(float nh, float a2) {
@@ -41,26 +41,28 @@ vec3 sample_ggx_vndf(vec3 wo, float alpha, vec2 u) {
 vec3 eval_metal(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;
   if (wi.z <= 0.0 || wo.z <= 0.0 || delta_metal(m)) return vec3(0.0);
-  float alpha = m.roughness * m.roughness;
+  MetalRec q = metal_rec(m);
+  float alpha = q.roughness * q.roughness;
   float a2 = alpha * alpha;
   vec3 hm = normalize(wo + wi);
   float d = ggx_d(hm.z, a2);
-  float f = fresnel_conductor(dot(wi, hm), m.ior_n, m.ior_k);
-  pdf = m.sampling >= 0.5 ? pdf_ggx_vndf(wo, hm, a2) : pdf_cosine_hemisphere(wi);
+  float f = fresnel_conductor(dot(wi, hm), q.ior_n, q.ior_k);
+  pdf = q.sampling >= 0.5 ? pdf_ggx_vndf(wo, hm, a2) : pdf_cosine_hemisphere(wi);
   return m.tint * (d * ggx_g2(wo.z, wi.z, a2) * f / (4.0 * wo.z));
 }
 
 bool sample_metal(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {
   if (wo.z <= 0.0) return false;
+  MetalRec q = metal_rec(m);
   if (delta_metal(m)) {
     s.wi = vec3(-wo.x, -wo.y, wo.z);
-    s.weight = m.tint * fresnel_conductor(wo.z, m.ior_n, m.ior_k);
+    s.weight = m.tint * fresnel_conductor(wo.z, q.ior_n, q.ior_k);
     s.pdf = 0.0;
     s.delta = true;
     return true;
   }
-  float alpha = m.roughness * m.roughness;
-  if (m.sampling >= 0.5) {
+  float alpha = q.roughness * q.roughness;
+  if (q.sampling >= 0.5) {
     vec3 hm = sample_ggx_vndf(wo, alpha, u.xy);
     s.wi = reflect(-wo, hm);
   } else {

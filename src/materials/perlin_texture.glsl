@@ -28,3 +28,7 @@ float perlin_pattern(vec3 p, float scale) {
   }
   return 0.5 + sum;
 }
+void resolve_hit_perlin_texture(inout Surface sf, Ray r, Hit h) {
+  PerlinTextureRec q = perlin_texture_rec(sf.m);
+  sf.m = textured_diffuse(sf.m, q.color2, perlin_pattern(h.p, q.scale));
+}

@@ -9,15 +9,16 @@ vec3 albedo_phong_specular(MaterialRec m) { return m.tint; }
 vec3 eval_phong_specular(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;
   if (wi.z <= 0.0 || wo.z <= 0.0) return vec3(0.0);
+  float n = phong_specular_rec(m).exponent;
   float c = max(dot(wi, vec3(-wo.x, -wo.y, wo.z)), 0.0);
-  float lobe = pow(c, m.exponent) * INV_PI * 0.5;
-  pdf = (m.exponent + 1.0) * lobe;
-  return m.tint * ((m.exponent + 2.0) * lobe * wi.z);
+  float lobe = pow(c, n) * INV_PI * 0.5;
+  pdf = (n + 1.0) * lobe;
+  return m.tint * ((n + 2.0) * lobe * wi.z);
 }
 
 bool sample_phong_specular(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {
   if (wo.z <= 0.0) return false;
-  float cos_a = pow(u.x, 1.0 / (m.exponent + 1.0));
+  float cos_a = pow(u.x, 1.0 / (phong_specular_rec(m).exponent + 1.0));
   float sin_a = sqrt(max(0.0, 1.0 - cos_a * cos_a));
   float phi = TWO_PI * u.y;
   Frame lobe = frame_from(vec3(-wo.x, -wo.y, wo.z));

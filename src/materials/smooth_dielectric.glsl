@@ -14,7 +14,8 @@ vec3 eval_smooth_dielectric(MaterialRec m, vec3 wo, vec3 wi, bool entering, out 
 }
 
 bool sample_smooth_dielectric(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {
-  float eta = entering ? m.eta_inner / m.eta_outer : m.eta_outer / m.eta_inner;
+  SmoothDielectricRec q = smooth_dielectric_rec(m);
+  float eta = entering ? q.eta_inner / q.eta_outer : q.eta_outer / q.eta_inner;
   float f = fresnel_dielectric(wo.z, eta);
   s.pdf = 0.0;
   s.delta = true;

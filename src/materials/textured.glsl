@@ -13,8 +13,9 @@
 // Sampling picks a lobe with probability proportional to its summed weights (one-sample
 // MIS with the mixture density, as pbrt's BSDF does).
 // The image maps are layers of one texture array (render/image_maps.h); the record keeps
-// their layer numbers. resolve_textured (textured_resolve.glsl) replaces the record by its
-// values at the hit: tint = (1 - s) rho, color2 = s; the functions below read that.
+// their layer numbers. resolve_hit_textured (textured_resolve.glsl) replaces the record by
+// its values at the hit: tint = (1 - s) rho and the hit field spec = s; the functions
+// below read that.
 uniform highp sampler2DArray u_maps;
 
 // Bilinear, wrap = repeat (the texture's own state); fract keeps the coordinates small
@@ -24,10 +25,20 @@ vec3 map_lookup(int layer, vec2 uv) { return textureLod(u_maps, vec3(fract(uv), 
 bool delta_textured(MaterialRec m) { return false; }
 // The albedo a mode shows (sh_irradiance.glsl): both lobes' weights, (1 - s) rho + s (the
 // Phong lobe's albedo is 1 at normal incidence).
-vec3 albedo_textured(MaterialRec m) { return m.tint + m.color2; }
+vec3 albedo_textured(MaterialRec m) { return m.tint + textured_rec(m).spec; }
+
+// The Phong lobe of weight s as a PhongSpecular record.
+MaterialRec textured_phong(MaterialRec m) {
+  TexturedRec q = textured_rec(m);
+  MaterialRec sm = m;
+  sm.kind = MAT_PHONG_SPECULAR;
+  sm.tint = q.spec;
+  return with_phong_specular_rec(sm, PhongSpecularRec(q.exponent));
+}
 
 float textured_specular_probability(MaterialRec m) {
-  float d = m.tint.r + m.tint.g + m.tint.b, sp = m.color2.r + m.color2.g + m.color2.b;
+  vec3 spec = textured_rec(m).spec;
+  float d = m.tint.r + m.tint.g + m.tint.b, sp = spec.r + spec.g + spec.b;
   return d + sp > 0.0 ? sp / (d + sp) : 0.0;
 }
 
@@ -39,21 +50,17 @@ vec3 eval_textured(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf
   vec3 f = eval_diffuse(m, wo, wi, entering, pd);
   pdf = (1.0 - ps) * pd;
   if (ps > 0.0) {
-    MaterialRec sm = m;
-    sm.tint = m.color2;
     float pp;
-    f += eval_phong_specular(sm, wo, wi, entering, pp);
+    f += eval_phong_specular(textured_phong(m), wo, wi, entering, pp);
     pdf += ps * pp;
   }
   return f;
 }
 
 bool sample_textured(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {
-  if (wo.z <= 0.0 || max3(m.tint) + max3(m.color2) <= 0.0) return false;
-  MaterialRec sm = m;
-  sm.tint = m.color2;
+  if (wo.z <= 0.0 || max3(m.tint) + max3(textured_rec(m).spec) <= 0.0) return false;
   BsdfSample lobe;
-  bool ok = u.z < textured_specular_probability(m) ? sample_phong_specular(sm, wo, entering, u, lobe)
+  bool ok = u.z < textured_specular_probability(m) ? sample_phong_specular(textured_phong(m), wo, entering, u, lobe)
                                                    : sample_diffuse(m, wo, entering, u, lobe);
   if (!ok) return false;
   s.wi = lobe.wi;

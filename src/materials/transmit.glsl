@@ -12,7 +12,8 @@ vec3 eval_transmit(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf
 }
 
 bool sample_transmit(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {
-  float eta = entering ? m.eta_inner / m.eta_outer : m.eta_outer / m.eta_inner;
+  TransmitRec q = transmit_rec(m);
+  float eta = entering ? q.eta_inner / q.eta_outer : q.eta_outer / q.eta_inner;
   s.pdf = 0.0;
   s.delta = true;
   vec3 wt;

@@ -25,3 +25,7 @@ float worley_pattern(vec3 p, float scale) {
       }
   return 1.0 - smoothstep(0.0, 0.15, sqrt(f2) - sqrt(f1));  // 1 on borders
 }
+void resolve_hit_worley_texture(inout Surface sf, Ray r, Hit h) {
+  WorleyTextureRec q = worley_texture_rec(sf.m);
+  sf.m = textured_diffuse(sf.m, q.color2, worley_pattern(h.p, q.scale));
+}

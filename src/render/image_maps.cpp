@@ -64,15 +64,6 @@ MapArray build_map_array(const Scene& scene, int max_size, int max_layers) {
   return a;
 }
 
-void pack_textured(RecordBuffer& materials, int i, const Material& m) {
-  namespace f = material_rec;
-  materials.set(i, f::map_diffuse, m.diffuse_map);
-  materials.set(i, f::map_specular, m.specular_map);
-  materials.set(i, f::map_normal, m.normal_map);
-  materials.set(i, f::uv_scale, m.uv_scale);
-  materials.set(i, f::uv_offset, m.uv_offset);
-}
-
 RecordBuffer pack_uvs(const Scene& scene) {
   RecordBuffer b(uv_rec::kTexels);
   for (const Shape& s : scene.shapes) {

@@ -35,8 +35,6 @@ MapArray build_map_array(const Scene& scene, int max_size, int max_layers);
 // lookup of the source would return there).
 std::vector<float> resample_repeat(const ImageMap& src, int width, int height);
 
-// The Textured fields of a material record (map layers and the uv transform).
-void pack_textured(RecordBuffer& materials, int i, const Material& m);
 // One uv record per shape (Triangle vertex uv; zero for other kinds).
 RecordBuffer pack_uvs(const Scene& scene);
 

@@ -2,8 +2,7 @@
 
 #include <climits>
 #include <chrono>
-
-#include "render/image_maps.h"
+#include <variant>
 
 #include "core/error.h"
 #include "shapes/triangle.h"
@@ -11,27 +10,22 @@
 namespace pt {
 namespace {
 
+// The header every material has, and the kind's own fields (materials/<kind>.h: pack).
 void pack_materials(const Scene& scene, PackedScene& p) {
   for (const Material& m : scene.materials) {
-    namespace f = material_rec;
     const int i = p.materials.add();
-    p.materials.set(i, f::kind, int(m.kind));
-    p.materials.set(i, f::roughness, m.glossiness);
-    p.materials.set(i, f::sampling, m.montecarlo);
-    p.materials.set(i, f::tint, m.tint);
-    p.materials.set(i, f::ior_n, m.ior.x);
-    p.materials.set(i, f::ior_k, m.ior.y);
-    p.materials.set(i, f::emission, m.emission);
-    p.materials.set(i, f::eta_outer, m.outer_ior);
-    p.materials.set(i, f::eta_inner, m.inner_ior);
-    p.materials.set(i, f::exponent, m.exponent);
-    p.materials.set(i, f::child_a, m.child_a);
-    p.materials.set(i, f::child_b, m.child_b);
-    if (is_procedural_texture(m.kind)) {
-      p.materials.set(i, f::color2, m.color2);  // aliases the dielectric fields (see records.h)
-      p.materials.set(i, f::scale, m.scale);
-    }
-    if (m.kind == MaterialKind::Textured) pack_textured(p.materials, i, m);  // aliases too (see records.h)
+    p.materials.set(i, material_rec::kind, int(m.kind()));
+    std::visit(
+        [&](const auto& k) {
+          if constexpr (!std::is_same_v<std::decay_t<decltype(k)>, std::monostate>) {
+            MaterialWriter w(p.materials, i, k.kFields);
+            w.tint = m.tint;
+            k.pack(w);
+            p.materials.set(i, material_rec::tint, w.tint);
+          }
+        },
+        m.params);
+    p.materials.set(i, material_rec::emission, m.emission);
   }
 }
 

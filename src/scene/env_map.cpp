@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 #include "core/image_decode.h"
-#include "scene/xml_attrs.h"
+#include "core/xml_attrs.h"
 
 namespace pt {
 

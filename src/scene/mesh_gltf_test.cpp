@@ -155,21 +155,22 @@ TEST_CASE("glTF maps become <Textured>: base colour, normal, metalness as the sp
                                   dir + "/s.xml");
   REQUIRE(s.materials.size() == 1);
   const Material& m = s.materials[0];
-  CHECK(m.kind == MaterialKind::Textured);
+  REQUIRE(m.kind() == MaterialKind::Textured);
+  const Textured& t = *m.as<Textured>();
   CHECK(m.tint == glm::vec3(0.5f, 1.0f, 1.0f));
-  CHECK(m.exponent == Approx(30.0));  // 2 / alpha^2 - 2, alpha = roughness^2 = 0.25
+  CHECK(t.n == Approx(30.0));  // 2 / alpha^2 - 2, alpha = roughness^2 = 0.25
   REQUIRE(s.images.size() == 3);
-  REQUIRE(m.diffuse_map >= 0);
-  REQUIRE(m.specular_map >= 0);
-  REQUIRE(m.normal_map >= 0);
+  REQUIRE(t.diffuse >= 0);
+  REQUIRE(t.specular >= 0);
+  REQUIRE(t.normal >= 0);
   // Texel (0, 0) of a map is the image's bottom-left: the blue quadrant.
-  const ImageMap& d = *s.images[size_t(m.diffuse_map)];
-  const ImageMap& sp = *s.images[size_t(m.specular_map)];
+  const ImageMap& d = *s.images[size_t(t.diffuse)];
+  const ImageMap& sp = *s.images[size_t(t.specular)];
   CHECK(d.rgba[0] == 0.0f);
   CHECK(d.rgba[2] == 1.0f);
   CHECK(sp.rgba[0] == 0.5f);  // blue 1 x metallicFactor 0.5, grey
   CHECK(sp.rgba[1] == 0.5f);
   const size_t top_left = size_t(3 * 4) * 4;  // row 3 (the image's top), column 0: red
   CHECK(sp.rgba[top_left] == 0.0f);
-  CHECK(s.images[size_t(m.normal_map)]->normal);
+  CHECK(s.images[size_t(t.normal)]->normal);
 }

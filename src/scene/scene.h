@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "materials/all.h"
 #include "scene/kinds.h"
 #include "core/render_mode.h"
 #include "core/tonemap.h"
@@ -16,23 +17,21 @@
 
 namespace pt {
 
-struct Material {
-  MaterialKind kind = MaterialKind::Diffuse;
-  glm::vec3 tint{1.0f};       // product of enclosing Attenuate colours and the material's colour
-  glm::vec3 emission{0.0f};   // Emit: radiance
-  glm::vec2 ior{1.5f, 0.0f};  // Metal: complex IOR (n, k); dielectrics: n in .x
-  float glossiness = 0.0f;    // Metal: 0 mirror .. 1 rough (GGX alpha = glossiness^2)
-  float montecarlo = 1.0f;    // Metal: 1 samples the microfacet distribution, 0 the cosine lobe
-  float outer_ior = 1.0f;     // Transmit / SmoothDielectric: medium outside the surface
-  float inner_ior = 1.5f;     // medium inside
-  float exponent = 0.0f;      // PhongSpecular: the lobe's exponent n
-  int child_a = -1, child_b = -1;  // FresnelComposite: reflective and transmissive children
-  glm::vec3 color2{0.0f};     // procedural textures: the second colour (the first is tint)
-  float scale = 10.0f;        // procedural textures: feature size in scene units
-  // Textured: indices into Scene::images (-1: none) and the uv transform uv * scale + offset.
-  int diffuse_map = -1, specular_map = -1, normal_map = -1;
-  glm::vec2 uv_scale{1.0f}, uv_offset{0.0f};
-  int line = 0;               // scene-file line, for messages
+// A material: its kind's parameters (materials/<kind>.h, the variant's index is its
+// MaterialKind) and what every kind has (MaterialCommon: the Attenuate tint, emission).
+struct Material : MaterialCommon {
+  MaterialParams params{Diffuse{}};
+  int line = 0;  // scene-file line, for messages
+  Material() = default;
+  template <class K, class = std::enable_if_t<!std::is_same_v<std::decay_t<K>, Material> && !std::is_same_v<std::decay_t<K>, MaterialParams>>>
+  Material(K kind, glm::vec3 tint_ = glm::vec3(1.0f)) : params(std::move(kind)) {  // Material m = Metal{...};
+    tint = tint_;
+  }
+  MaterialKind kind() const { return MaterialKind(params.index()); }
+  template <class K>
+  K* as() { return std::get_if<K>(&params); }
+  template <class K>
+  const K* as() const { return std::get_if<K>(&params); }
 };
 
 struct Shape {

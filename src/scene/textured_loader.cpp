@@ -34,21 +34,6 @@ ImageMap decode_image_map(const LoadedImage& img, bool normal) {
   return m;
 }
 
-namespace {
-
-int load_map(XmlAttrs& a, Scene& scene, const char* attr, bool normal, const PathResolver& resolve) {
-  if (!a.has(attr)) return -1;
-  const std::string given = a.text(attr);
-  const std::string path = resolve(a, given);
-  for (size_t i = 0; i < scene.images.size(); ++i)
-    if (scene.images[i]->path == path && scene.images[i]->normal == normal) return int(i);
-  LoadedImage img;
-  std::string why;
-  if (!read_image(path, &img, &why)) a.fail("cannot read '" + given + "': " + why);
-  return add_image_map(scene, path, img, normal, a.line(), [&](const std::string& what) { a.fail("'" + given + "' " + what); });
-}
-
-}  // namespace
 
 int add_image_map(Scene& scene, const std::string& name, const LoadedImage& img, bool normal, int line,
                   const std::function<void(const std::string&)>& fail) {
@@ -67,15 +52,16 @@ int add_image_map(Scene& scene, const std::string& name, const LoadedImage& img,
 }
 
 
-void parse_textured_attrs(XmlAttrs& a, Scene& scene, Material& m, const PathResolver& resolve) {
-  m.diffuse_map = load_map(a, scene, "diffuse", false, resolve);
-  m.specular_map = load_map(a, scene, "specular", false, resolve);
-  m.normal_map = load_map(a, scene, "normal", true, resolve);
-  m.exponent = a.number("n", 50.0f);
-  if (!(m.exponent > 0.0f) || m.exponent > 1e5f) a.fail("'n' must be in (0, 100000]");
-  m.uv_scale = a.has("uvScale") ? a.vec2("uvScale") : glm::vec2(1.0f);
-  m.uv_offset = a.has("uvOffset") ? a.vec2("uvOffset") : glm::vec2(0.0f);
-  if (m.uv_scale.x == 0.0f || m.uv_scale.y == 0.0f) a.fail("'uvScale' must be non-zero");
+int load_image_map(XmlAttrs& a, Scene& scene, const char* attr, bool normal, const PathResolver& resolve) {
+  if (!a.has(attr)) return -1;
+  const std::string given = a.text(attr);
+  const std::string path = resolve(a, given);
+  for (size_t i = 0; i < scene.images.size(); ++i)
+    if (scene.images[i]->path == path && scene.images[i]->normal == normal) return int(i);
+  LoadedImage img;
+  std::string why;
+  if (!read_image(path, &img, &why)) a.fail("cannot read '" + given + "': " + why);
+  return add_image_map(scene, path, img, normal, a.line(), [&](const std::string& what) { a.fail("'" + given + "' " + what); });
 }
 
 }  // namespace pt

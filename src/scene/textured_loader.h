@@ -1,21 +1,21 @@
-// <Textured>: the image-map material's attributes, and decoding of its image files.
+// The image maps of <Textured> (materials/textured.h): reading and decoding its files.
 #pragma once
 #include <functional>
 #include <string>
 
 #include "core/image.h"
 #include "scene/scene.h"
-#include "scene/xml_attrs.h"
+#include "core/xml_attrs.h"
 
 namespace pt {
 
-// Reads diffuse / specular / normal, n, uvScale and uvOffset into `m`, loading each image
-// into scene.images once. `resolve` turns a path as written into the file to open (the
-// scene loader's resolve_path: relative to the scene file, recorded as a dependency,
-// refused where file references are off). A file that cannot be read is an error naming
-// it and the element's line.
+// The image named by attribute `attr` of `a` (-1 when absent), loaded into scene.images
+// once per (file, decoding); its index there. `resolve` turns a path as written into the
+// file to open (the scene loader's resolve_path: relative to the scene file, recorded as
+// a dependency, refused where file references are off). A file that cannot be read is an
+// error naming it and the element's line.
 using PathResolver = std::function<std::string(XmlAttrs&, const std::string&)>;
-void parse_textured_attrs(XmlAttrs& a, Scene& scene, Material& m, const PathResolver& resolve);
+int load_image_map(XmlAttrs& a, Scene& scene, const char* attr, bool normal, const PathResolver& resolve);
 
 // Decoding of a loaded file's code values (core/image.h): sRGB (IEC 61966-2-1) to linear
 // for 8/16-bit colour maps, HDR values unchanged; normal maps map the code range onto

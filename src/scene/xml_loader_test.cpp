@@ -48,11 +48,11 @@ TEST_CASE("scene0 loads: plane, boxes, dielectrics, a metal sphere", "[loader]")
   CHECK(s.shapes.size() == 13);
   int boxes = 0, dielectrics = 0;
   for (const Shape& sh : s.shapes) boxes += sh.kind == ShapeKind::Box;
-  for (const Material& m : s.materials) dielectrics += m.kind == MaterialKind::SmoothDielectric;
+  for (const Material& m : s.materials) dielectrics += m.kind() == MaterialKind::SmoothDielectric;
   CHECK(boxes == 10);
   CHECK(dielectrics == 4);
   const Material& plane_mat = s.materials[size_t(s.shapes[1].material)];
-  CHECK(plane_mat.kind == MaterialKind::Diffuse);
+  CHECK(plane_mat.kind() == MaterialKind::Diffuse);
   CHECK(plane_mat.tint.x == Approx(0.8f));  // Attenuate folds into the tint
 }
 
@@ -68,7 +68,7 @@ TEST_CASE("scene1: the crystal table with min > max is normalised", "[loader]") 
   }
   CHECK(found);
   int transmit = 0;
-  for (const Material& m : s.materials) transmit += m.kind == MaterialKind::Transmit;
+  for (const Material& m : s.materials) transmit += m.kind() == MaterialKind::Transmit;
   CHECK(transmit == 1);
 }
 
@@ -77,16 +77,16 @@ TEST_CASE("scene2: Cornell box with an emissive box", "[loader]") {
   int emitters = 0;
   for (const Shape& sh : s.shapes) {
     const Material& m = s.materials[size_t(sh.material)];
-    if (m.kind == MaterialKind::Emit && sh.light < 0) {
+    if (m.kind() == MaterialKind::Emit && sh.light < 0) {
       ++emitters;
       CHECK(m.emission == glm::vec3(69.0f));
     }
   }
   CHECK(emitters == 1);
   const Material& metal = s.materials[size_t(s.shapes[s.shapes.size() - 2].material)];
-  CHECK(metal.kind == MaterialKind::Metal);
-  CHECK(metal.ior == glm::vec2(2.1928f, 3.9379f));
-  CHECK(metal.glossiness == Approx(0.1f));
+  REQUIRE(metal.kind() == MaterialKind::Metal);
+  CHECK(metal.as<Metal>()->iorComplex == glm::vec2(2.1928f, 3.9379f));
+  CHECK(metal.as<Metal>()->glossiness == Approx(0.1f));
 }
 
 TEST_CASE("malformed scenes give file, line and problem", "[loader]") {
@@ -186,9 +186,10 @@ TEST_CASE("Reflect and PhongSpecular", "[loader]") {
                                       "<Sphere center=\"3 0 0\" radius=\"1\"><Attenuate color=\"0.5 0.5 0.5\"><PhongSpecular n=\"100\"/></Attenuate></Sphere>"
                                       "</Objects></SceneLevel>",
                                   "x.xml");
-  CHECK(s.materials[0].kind == MaterialKind::Reflect);
-  CHECK(s.materials[1].kind == MaterialKind::PhongSpecular);
-  CHECK(s.materials[1].exponent == 100.0f);
+  CHECK(s.materials[0].kind() == MaterialKind::Reflect);
+  CHECK(s.materials[1].kind() == MaterialKind::PhongSpecular);
+  REQUIRE(s.materials[1].as<PhongSpecular>());
+  CHECK(s.materials[1].as<PhongSpecular>()->n == 100.0f);
   CHECK(s.materials[1].tint == glm::vec3(0.5f));
   // Attenuate nests: the colours multiply (the furnace test renders a tint as its albedo).
   const Scene n = load_scene_text(h + "<Objects><Sphere center=\"0 0 0\" radius=\"1\"><Attenuate color=\"0.5 0.5 0.5\">"
@@ -208,12 +209,13 @@ TEST_CASE("FresnelComposite takes exactly two child materials", "[loader]") {
                                       "</FresnelComposite></Attenuate></Sphere></Objects></SceneLevel>",
                                   "x.xml");
   const Material& c = s.materials[size_t(s.shapes[0].material)];
-  REQUIRE(c.kind == MaterialKind::FresnelComposite);
-  CHECK(c.inner_ior == Approx(1.85f));
-  CHECK(s.materials[size_t(c.child_a)].kind == MaterialKind::Reflect);
-  CHECK(s.materials[size_t(c.child_a)].tint == glm::vec3(1.0f, 0.5f, 0.5f));  // the outer Attenuate reaches the children
-  CHECK(s.materials[size_t(c.child_b)].kind == MaterialKind::Diffuse);
-  CHECK(s.materials[size_t(c.child_b)].tint == glm::vec3(1.0f, 0.0f, 0.0f));
+  REQUIRE(c.kind() == MaterialKind::FresnelComposite);
+  const FresnelComposite& fc = *c.as<FresnelComposite>();
+  CHECK(fc.nb == Approx(1.85f));
+  CHECK(s.materials[size_t(fc.reflective)].kind() == MaterialKind::Reflect);
+  CHECK(s.materials[size_t(fc.reflective)].tint == glm::vec3(1.0f, 0.5f, 0.5f));  // the outer Attenuate reaches the children
+  CHECK(s.materials[size_t(fc.transmissive)].kind() == MaterialKind::Diffuse);
+  CHECK(s.materials[size_t(fc.transmissive)].tint == glm::vec3(1.0f, 0.0f, 0.0f));
   CHECK(error_of(h + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\"><FresnelComposite><Reflect/></FresnelComposite></Sphere></Objects></SceneLevel>") ==
         "bad.xml:5: <FresnelComposite>: must contain exactly two materials: a reflective one, then a transmissive one");
 }

@@ -23,13 +23,9 @@ Features Features::of(const Scene& scene) {
   f.env_map = scene.environment.map != nullptr;
   for (const Shape& s : scene.shapes) f.motion |= s.velocity != glm::vec3(0.0f);
   for (const Shape& s : scene.shapes) f.shapes |= 1u << int(s.kind);
-  // Every material in the list is used (by a shape or as a composite's child).
-  for (const Material& m : scene.materials) {
-    f.materials |= 1u << int(m.kind);
-    if (is_procedural_texture(m.kind)) f.materials |= 1u << int(MaterialKind::Diffuse);  // it shades as Diffuse
-    if (m.kind == MaterialKind::Textured)  // its lobes are Diffuse's and PhongSpecular's
-      f.materials |= 1u << int(MaterialKind::Diffuse) | 1u << int(MaterialKind::PhongSpecular);
-  }
+  // Every material in the list is used (by a shape or as a composite's child), with the
+  // kinds whose functions its own call (a texture shades as Diffuse).
+  for (const Material& m : scene.materials) f.materials |= kind_bit(m.kind()) | kMaterialTraits[int(m.kind())].needs;
   for (const Shape& s : scene.shapes)
     if (is_sampled_light(scene, s)) f.lights |= 1u << int(s.kind);
   return f;
@@ -106,6 +102,34 @@ std::string upper(const char* s) {
   return u;
 }
 
+// A material kind's record as its GLSL sees it: struct <Kind>Rec with the fields the kind
+// declares (materials/material.h), <glsl>_rec(MaterialRec) reading them from the payload
+// slots p0.. in order, and with_<glsl>_rec writing them back (for the hit fields).
+std::string kind_record(MaterialKind k) {
+  const MaterialTraits& t = kMaterialTraits[int(k)];
+  if (t.num_fields == 0) return "";
+  static const char* kTypes[] = {"", "float", "vec2", "vec3", "vec4"};
+  const std::string rec = std::string(kMaterialKindTypes[int(k)]) + "Rec", fn = info(k).glsl;
+  std::string decl = "struct " + rec + " {", get = rec + " " + fn + "_rec(MaterialRec m) {\n  " + rec + " r;\n",
+              put = "MaterialRec with_" + fn + "_rec(MaterialRec m, " + rec + " r) {\n";
+  int slot = 0;
+  for (int i = 0; i < t.num_fields; ++i) {
+    const KindField& f = t.fields[i];
+    const bool is_int = f.type[0] == 'i';
+    decl += " " + std::string(f.type) + " " + f.name + ";";
+    std::string src;
+    for (int c = 0; c < f.width; ++c) {
+      const std::string p = "m.p" + std::to_string(slot + c);
+      src += (c ? ", " : "") + p;
+      const std::string comp = f.width == 1 ? "" : std::string(".") + "xyzw"[c];
+      put += "  " + p + " = " + (is_int ? "float(r." + std::string(f.name) + ")" : "r." + std::string(f.name) + comp) + ";\n";
+    }
+    get += "  r." + std::string(f.name) + " = " + (is_int ? "int(" + src + ")" : f.width == 1 ? src : std::string(kTypes[f.width]) + "(" + src + ")") + ";\n";
+    slot += f.width;
+  }
+  return decl + " };\n" + get + "  return r;\n}\n" + put + "  return m;\n}\n";
+}
+
 }  // namespace
 
 ShaderSource resolve_includes(const std::string& root_text, const std::string& root_name) {
@@ -138,12 +162,14 @@ std::string generate_prelude(const Features& features) {
     }
   if (f.motion) g += "#define HAS_MOTION 1\n";
   g += "#include \"common.glsl\"\n";
-  g += glsl_record(shape_layout()) + glsl_record(material_layout()) + glsl_record(light_layout());
+  g += glsl_record(shape_layout()) + glsl_record(material_glsl()) + glsl_record(light_layout());
   g += glsl_record(node_layout()) + glsl_record(prim_layout());
   if (f.has(ShapeKind::Mesh)) g += glsl_record(vertex_layout());
   if (f.has(MaterialKind::Textured)) g += "precision highp sampler2DArray;\n" + glsl_record(uv_layout());
   g += glsl_sobol_table();
-  g += "#include \"rng.glsl\"\n#include \"sampler.glsl\"\n#include \"sampling.glsl\"\n";
+  g += "#include \"rng.glsl\"\n#include \"sampler.glsl\"\n#include \"sampling.glsl\"\n#include \"surface_types.glsl\"\n";
+  for (int i = 0; i < kNumMaterialKinds; ++i)
+    if (f.has(MaterialKind(i))) g += kind_record(MaterialKind(i));
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i))) g += "#include \"shapes/" + std::string(kShapeKinds[i].glsl) + ".glsl\"\n";
   for (int i = 0; i < kNumMaterialKinds; ++i)
@@ -181,17 +207,21 @@ std::string generate_prelude(const Features& features) {
   }
   g += delta + "  return true;\n}\n" + eval + "  pdf = 0.0;\n  return vec3(0.0);\n}\n" + smp + "  return false;\n}\n" + alb +
        "  return m.tint;\n}\n";
-  // Solid textures become a Diffuse record at the hit point: <name>_texture.glsl defines
-  // <name>_pattern(p, scale) in [0, 1], the mix from tint (color1) to color2.
-  std::string tex;
+  // The surface step's hooks (surface.glsl): a composite kind picks a child, level by
+  // level; a kind resolved at the hit becomes what shades there.
+  std::string comp = "MaterialRec resolve_composites(MaterialRec m, float cos_o, bool entering, float u) {\n", hit =
+                     "void resolve_hit(inout Surface sf, Ray r, Hit h) {\n";
+  std::string comp_cases;
   for (int i = 0; i < kNumMaterialKinds; ++i) {
-    if (!f.has(MaterialKind(i)) || !is_procedural_texture(MaterialKind(i))) continue;
-    const std::string k = kMaterialKinds[i].glsl;
-    tex += "  if (m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") return textured_diffuse(m, " +
-           k.substr(0, k.size() - std::string("_texture").size()) + "_pattern(p, m.scale));\n";
+    if (!f.has(MaterialKind(i))) continue;
+    const std::string k = kMaterialKinds[i].glsl, cond = "if (m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") ";
+    if (kMaterialTraits[i].composite) comp_cases += std::string(comp_cases.empty() ? "    " : "    else ") + cond + "m = choose_" + k + "(m, cos_o, entering, u);\n";
+    if (kMaterialTraits[i].resolves_at_hit) hit += "  if (sf.m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") resolve_hit_" + k + "(sf, r, h);\n";
   }
-  if (!tex.empty()) g += "#define HAS_TEXTURES 1\nMaterialRec resolve_texture(MaterialRec m, vec3 p) {\n" + tex + "  return m;\n}\n";
+  if (!comp_cases.empty())
+    comp += "  for (int level = 0; level < " + std::to_string(kMaxCompositeDepth) + "; ++level) {\n" + comp_cases + "    else break;\n  }\n";
   if (f.has(MaterialKind::Textured)) g += glsl_textured_support(f);  // image maps: uv of the shapes present
+  g += comp + "  return m;\n}\n" + hit + "}\n";
   // Light sampling over the emitter kinds present (solid-angle densities).
   std::string lsmp = "bool light_sample_shape(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {\n";
   std::string lpdf = "float light_pdf_shape(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {\n";

@@ -1,4 +1,4 @@
-#include "scene/xml_attrs.h"
+#include "core/xml_attrs.h"
 
 #include <cerrno>
 #include <cmath>

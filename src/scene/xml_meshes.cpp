@@ -1,0 +1,181 @@
+// <Mesh> elements: their sources (files read once per scene, or generated), the
+// instances they place, and the materials a glTF file brings (scene/xml_walk.h).
+#include <cctype>
+#include <cmath>
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "scene/mesh_generate.h"
+#include "scene/mesh_json.h"
+#include "scene/mesh_obj.h"
+#include "scene/textured_loader.h"
+#include "scene/xml_walk.h"
+
+namespace pt {
+
+using tinyxml2::XMLElement;
+
+bool has_extension(const std::string& path, const char* ext) {
+  const size_t n = std::strlen(ext);
+  if (path.size() <= n) return false;
+  for (size_t i = 0; i < n; ++i)
+    if (std::tolower(static_cast<unsigned char>(path[path.size() - n + i])) != ext[i]) return false;
+  return true;
+}
+
+Resumable load_mesh_steps(MeshSource m, MeshEntry& e) {
+  e = MeshEntry();
+  try {
+    auto d = std::make_shared<MeshData>();
+    if (m.src.empty()) {
+      Resumable g = generate_icosphere_steps(m.level, m.displace, *d);
+      while (!co_await g) {
+      }
+      e.parts.push_back({std::move(d), glm::mat4(1.0f), {}});
+    } else {
+      std::optional<std::string> bytes;
+      Resumable read = read_file_steps(m.src, bytes);
+      while (!co_await read) {
+      }
+      if (!bytes) throw InputError(m.src, 0, "cannot open the mesh file");
+      if (has_extension(m.src, ".gltf") || has_extension(m.src, ".glb")) {
+        // The glTF's own buffer and image files are dependencies too (watch reloads on their change).
+        Resumable g = parse_gltf_steps(std::move(*bytes), m.src, [&e](const std::string& f) {
+          e.files.push_back(f);
+          return f;
+        }, e.parts);
+        while (!co_await g) {
+        }
+      } else if (has_extension(m.src, ".obj")) {
+        Resumable o = parse_mesh_obj_steps(std::move(*bytes), m.src, *d);
+        while (!co_await o) {
+        }
+        e.parts.push_back({std::move(d), glm::mat4(1.0f), {}});
+      } else {
+        e.parts.push_back({std::make_shared<const MeshData>(parse_mesh_json(*bytes, m.src)), glm::mat4(1.0f), {}});  // the seed's small meshes: one step
+      }
+    }
+  } catch (const InputError& err) {
+    e.parts.clear();
+    e.error = err.what();
+  }
+  e.loaded = true;
+}
+
+
+int Loader::mesh_index(const std::shared_ptr<const MeshData>& d) {
+  for (size_t i = 0; i < scene.meshes.size(); ++i)
+    if (scene.meshes[i] == d) return int(i);
+  scene.meshes.push_back(d);
+  return int(scene.meshes.size()) - 1;
+}
+
+int Loader::gltf_material(const GltfMaterial& g, XmlAttrs& a) {
+  Material m;
+  m.line = a.line();
+  m.tint = g.base_color;
+  const bool maps = g.base_color_map || g.metallic_roughness_map || g.normal_map;
+  if (g.emissive != glm::vec3(0.0f)) {
+    m.params = Emit{};
+    m.emission = g.emissive;
+  } else if (g.transmission >= 0.5f) {
+    m.params = SmoothDielectric{.ior = g.ior};
+  } else if (g.metallic >= 0.5f && !g.metallic_roughness_map) {
+    // A bright conductor tinted by the base colour; GGX alpha = roughness^2, as glTF.
+    m.params = Metal{.iorComplex = glm::vec2(0.15f, 3.6f), .glossiness = glm::clamp(g.roughness, 0.0f, 1.0f)};
+  } else if (maps) {
+    Textured t;
+    auto add = [&](const GltfImage& img, const std::string& name, const LoadedImage& pixels, bool normal) {
+      return add_image_map(scene, name, pixels, normal, a.line(), [&](const std::string& what) { a.fail("'" + img.name + "' " + what); });
+    };
+    if (g.base_color_map) t.diffuse = add(*g.base_color_map, g.base_color_map->name, g.base_color_map->image, false);
+    if (g.normal_map) t.normal = add(*g.normal_map, g.normal_map->name, g.normal_map->image, true);
+    if (g.metallic_roughness_map) {
+      // The Phong lobe's weight s is the metalness (blue, linear) times metallicFactor, grey;
+      // the lobe's exponent comes from roughnessFactor (n = 2 / alpha^2 - 2, alpha = roughness^2).
+      LoadedImage s = g.metallic_roughness_map->image;
+      for (size_t i = 0; i < s.rgba.size(); i += 4) s.rgba[i] = s.rgba[i + 1] = s.rgba[i + 2] = s.rgba[i + 2] * g.metallic;
+      s.bits = 0;
+      t.specular = add(*g.metallic_roughness_map, g.metallic_roughness_map->name + "#metalness*" + std::to_string(g.metallic), s, false);
+    }
+    const float alpha = g.roughness * g.roughness;
+    t.n = alpha > 0.0f ? glm::clamp(2.0f / (alpha * alpha) - 2.0f, 1.0f, 1e5f) : 1e5f;
+    m.params = t;
+  }
+  scene.materials.push_back(m);
+  return int(scene.materials.size()) - 1;
+}
+
+MeshSource Loader::mesh_source(XmlAttrs& a, const XMLElement* e) {
+  MeshSource m;
+  if (e->Attribute("generate") == nullptr) {
+    m.src = m.key = resolve_path(a, a.text("src"));
+    if (!has_extension(m.src, ".gltf") && !has_extension(m.src, ".glb") && !has_extension(m.src, ".obj") && !has_extension(m.src, ".json"))
+      a.fail("'src' must be a .json (the seed's format), .obj, .gltf or .glb mesh");
+    return m;
+  }
+  if (e->Attribute("src")) a.fail("takes 'src' or 'generate', not both");
+  if (a.text("generate") != "icosphere") a.fail("'generate' must be \"icosphere\"");
+  // Checked as a number before the conversion: a float beyond int's range does not convert.
+  const float lf = a.number("level", 5.0f);
+  m.displace = a.number("displace", 0.0f);
+  if (!(lf >= 0.0f && lf <= 9.0f && lf == std::floor(lf))) a.fail("'level' must be an integer in 0..9 (20 * 4^level triangles)");
+  m.level = int(lf);
+  if (!(m.displace >= 0.0f && m.displace < 0.5f)) a.fail("'displace' must be in [0, 0.5)");
+  m.key = "generate:icosphere:" + std::to_string(m.level) + ":" + std::to_string(m.displace);
+  return m;
+}
+
+void Loader::mesh(const XMLElement* e) {
+  XmlAttrs a(e, file);
+  const MeshSource source = mesh_source(a, e);
+  const glm::vec3 position = a.vec3("position", glm::vec3(0.0f));
+  const glm::vec3 rotation = a.vec3("rotation", glm::vec3(0.0f));
+  const float scale = a.number("scale", 1.0f);
+  if (!(scale > 0.0f)) a.fail("'scale' must be positive");
+  a.finish();
+  const bool gltf = has_extension(source.src, ".gltf") || has_extension(source.src, ".glb");
+  const XMLElement* m = e->FirstChildElement();
+  if ((!m && !gltf) || (m && m->NextSiblingElement())) a.fail(gltf ? "takes at most one material element inside" : "needs exactly one material element inside");
+  MeshEntry& entry = mesh_files[source.key];
+  if (!entry.loaded) load_mesh_steps(source, entry).finish();  // else SceneLoad read it ahead
+  if (entry.error) a.fail("cannot load the mesh: " + *entry.error);
+  if (!entry.used) scene.files.insert(scene.files.end(), entry.files.begin(), entry.files.end());
+  entry.used = true;
+  const std::vector<GltfPart>& parts = entry.parts;
+  glm::mat4 place = glm::translate(glm::mat4(1.0f), position);
+  place = glm::rotate(place, glm::radians(rotation.z), glm::vec3(0, 0, 1));
+  place = glm::rotate(place, glm::radians(rotation.y), glm::vec3(0, 1, 0));
+  place = glm::rotate(place, glm::radians(rotation.x), glm::vec3(1, 0, 0));
+  place = glm::scale(place, glm::vec3(scale));
+  const int shared_material = m ? material(m, glm::vec3(1.0f)) : -1;
+  for (const GltfPart& part : parts) {
+    const glm::mat4 world = place * part.transform;
+    auto within = [&](glm::vec3 v) {  // false for NaN too
+      return glm::all(glm::lessThanEqual(glm::abs(glm::vec3(world * glm::vec4(v, 1.0f))), glm::vec3(kMaxMagnitude)));
+    };
+    // The corners of the mesh's box bound every vertex (an affine map's extremes over a
+    // box are at its corners): each vertex is looked at only when a corner is out.
+    auto [box, fresh] = mesh_boxes.try_emplace(part.mesh.get(), glm::vec3(INFINITY), glm::vec3(-INFINITY));
+    if (fresh)  // once per mesh, not per instance
+      for (const glm::vec3& v : part.mesh->positions) box->second.first = glm::min(box->second.first, v), box->second.second = glm::max(box->second.second, v);
+    const glm::vec3 lo = box->second.first, hi = box->second.second;
+    bool corners_within = true;
+    for (int c = 0; c < 8; ++c) corners_within &= within(glm::vec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z));
+    if (!corners_within)
+      for (const glm::vec3& v : part.mesh->positions)
+        if (!within(v)) a.fail("scaled and moved, the mesh has a vertex beyond 1e9");
+    Shape s;
+    s.kind = ShapeKind::Mesh;
+    s.mesh = mesh_index(part.mesh);
+    s.transform = place * part.transform;
+    s.material = shared_material >= 0 ? shared_material : gltf_material(part.material, a);
+    s.line = e->GetLineNum();
+    scene.shapes.push_back(s);
+  }
+}
+
+}  // namespace pt

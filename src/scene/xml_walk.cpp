@@ -1,0 +1,315 @@
+// The XML document walk (scene/xml_walk.h): <SceneLevel> and its elements, the shapes,
+// and the materials: <Attenuate> and <Emit> around a material are the walk's own; every
+// other element is a material kind that parses itself (materials/<kind>.h), found through
+// the list of kinds. Strict: unknown elements and attributes are errors with their line.
+#include <cmath>
+#include <cstring>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "scene/env_map.h"
+#include "scene/textured_loader.h"
+#include "scene/xml_walk.h"
+
+namespace pt {
+
+using tinyxml2::XMLElement;
+
+namespace {
+
+// Motion blur (extension): `velocity` (per unit time), or `end`, the centre at time 1
+// (velocity = end - start); not both.
+glm::vec3 parse_motion(XmlAttrs& a, glm::vec3 start) {
+  if (a.has("velocity") && a.has("end")) a.fail("give either 'velocity' or 'end'");
+  return a.has("end") ? a.vec3("end") - start : a.vec3("velocity", glm::vec3(0.0f));
+}
+
+void parse_sphere(XmlAttrs& a, Shape& s) {
+  s.a = a.vec3("center");
+  s.radius = a.number("radius");
+  if (!(s.radius > 0.0f)) a.fail("radius must be positive");
+  s.velocity = parse_motion(a, s.a);
+}
+
+void parse_box(XmlAttrs& a, Shape& s) {
+  const glm::vec3 p = a.vec3("min"), q = a.vec3("max");
+  // Files written for the original program give min > max on some axes: normalise.
+  s.a = glm::min(p, q);
+  s.b = glm::max(p, q);
+  if (s.a.x == s.b.x && s.a.y == s.b.y && s.a.z == s.b.z) a.fail("box has no extent");
+}
+
+void parse_plane(XmlAttrs& a, Shape& s) {
+  const glm::vec3 n = a.vec3("normal");
+  const float d = a.number("d");
+  const float len = glm::length(n);
+  if (!(len > 0.0f) || !std::isfinite(len)) a.fail("plane normal must be non-zero");
+  s.a = n / len;  // d = dot(normal, p0) scales with the normal's length
+  s.radius = d / len;
+}
+
+void parse_triangle(XmlAttrs& a, Shape& s) {
+  s.a = a.vec3("v0");
+  s.b = a.vec3("v1");
+  s.c = a.vec3("v2");
+  // Extension: texture coordinates of the three vertices (used by <Textured>).
+  const char* uv_names[3] = {"uv0", "uv1", "uv2"};
+  for (int i = 0; i < 3; ++i)
+    if (a.has(uv_names[i])) s.uv[i] = a.vec2(uv_names[i]);
+  if (!(glm::length(glm::cross(s.b - s.a, s.c - s.a)) > 0.0f)) a.fail("triangle has zero area");
+}
+
+struct ShapeParser {
+  const char* xml;
+  ShapeKind kind;
+  void (*parse)(XmlAttrs&, Shape&);
+};
+// Meshes are read from files by Loader::mesh, which shape() calls before this table.
+void parse_mesh(XmlAttrs& a, Shape&) { a.fail("internal: <Mesh> is handled by the mesh loader"); }
+
+constexpr ShapeParser kShapeParsers[] = {
+#define PT_X(e, g, x, l, r, b) {x, ShapeKind::e, &parse_##g},
+    PT_SHAPE_KINDS(PT_X)
+#undef PT_X
+};
+
+}  // namespace
+
+std::string Loader::resolve_path(XmlAttrs& a, const std::string& p) {
+  if (!allow_files) a.fail("file references are disabled for this scene text");
+  std::string r = !p.empty() && p[0] == '/' ? p : directory_of(file) + "/" + p;
+  scene.files.push_back(r);
+  return r;
+}
+
+std::shared_ptr<const EnvImage> Loader::load_env_image(XmlAttrs& a, const std::string& path) {
+  try {
+    return load_env_map(path);
+  } catch (const std::runtime_error& e) {
+    a.fail(e.what());
+  }
+}
+
+void Loader::fail(const XMLElement* e, const std::string& what) {
+  throw InputError(file, e ? e->GetLineNum() : 0, what);
+}
+
+int Loader::material(const XMLElement* e, glm::vec3 tint) {
+  if (!std::strcmp(e->Name(), "Attenuate")) {
+    XmlAttrs a(e, file);
+    const glm::vec3 c = a.vec3("color");
+    if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(c, glm::vec3(1.0f))))
+      a.fail("'color' components must be in [0, 1]");
+    a.finish();
+    const XMLElement* inner = e->FirstChildElement();
+    if (!inner || inner->NextSiblingElement()) a.fail("must wrap exactly one material");
+    return material(inner, tint * c);
+  }
+  // <Emit intensity=".." color=".."> around a material that is not <Absorb>: a surface that
+  // emits and also scatters (an extension of the seed's Emit+Absorb; the closed-form tests
+  // use it for walls of albedo rho and emission Le).
+  const XMLElement* first = e->FirstChildElement();
+  if (!std::strcmp(e->Name(), "Emit") && first && std::strcmp(first->Name(), "Absorb") != 0) {
+    XmlAttrs a(e, file);
+    const float intensity = a.number("intensity");
+    const glm::vec3 color = a.vec3("color", glm::vec3(1.0f));
+    if (intensity < 0.0f || glm::any(glm::lessThan(color, glm::vec3(0.0f)))) a.fail("intensity and color must be >= 0");
+    a.finish();
+    if (first->NextSiblingElement()) a.fail("must wrap exactly one material");
+    const int inner = material(first, tint);
+    scene.materials[size_t(inner)].emission += color * intensity;
+    return inner;
+  }
+  // One of the kinds (materials/kinds.h): its stem parses its attributes (and children).
+  Material m;
+  m.tint = tint;
+  m.line = e->GetLineNum();
+  XmlAttrs a(e, file);
+  bool found = false, has_children = false;
+#define PT_X(k, g, x)                         \
+  if (!found && !std::strcmp(e->Name(), x)) { \
+    k params;                                 \
+    MaterialParse p{a, e, m, *this};          \
+    params.parse(p);                          \
+    m.params = std::move(params);             \
+    has_children = KindHasChildren<k>::value; \
+    found = true;                             \
+  }
+  PT_MATERIAL_KINDS(PT_X)
+#undef PT_X
+  if (!found) fail(e, "unknown material <" + std::string(e->Name()) + ">");
+  a.finish();
+  if (!has_children && e->FirstChildElement()) a.fail("takes no child elements");
+  scene.materials.push_back(m);
+  return int(scene.materials.size()) - 1;
+}
+
+int Loader::child(const XMLElement* e, glm::vec3 tint) {
+  ++composite_depth_;
+  const int i = material(e, tint);
+  --composite_depth_;
+  return i;
+}
+
+int Loader::image_map(XmlAttrs& a, const char* attr, bool normal) {
+  return load_image_map(a, scene, attr, normal, [this](XmlAttrs& at, const std::string& p) { return resolve_path(at, p); });
+}
+
+void Loader::shape(const XMLElement* e) {
+  if (!std::strcmp(e->Name(), "Mesh")) return mesh(e);
+  for (const ShapeParser& p : kShapeParsers) {
+    if (std::strcmp(e->Name(), p.xml) != 0) continue;
+    Shape s;
+    s.kind = p.kind;
+    s.line = e->GetLineNum();
+    XmlAttrs a(e, file);
+    p.parse(a, s);
+    s.dynamic = a.boolean("isDynamic", false);
+    a.finish();
+    const XMLElement* m = e->FirstChildElement();
+    if (!m || m->NextSiblingElement()) a.fail("needs exactly one material element inside");
+    s.material = material(m, glm::vec3(1.0f));
+    scene.shapes.push_back(s);
+    return;
+  }
+  fail(e, "unknown object <" + std::string(e->Name()) + ">");
+}
+
+void Loader::camera(const XMLElement* e) {
+  XmlAttrs a(e, file);
+  Camera& c = scene.camera;
+  c.position = a.vec3("position");
+  c.up = a.vec3("up", glm::vec3(0.0f, 1.0f, 0.0f));
+  if (!(glm::length(c.up) > 0.0f)) a.fail("'up' must be non-zero");
+  c.up = glm::normalize(c.up);
+  c.yaw = a.number("yaw", 0.0f);
+  c.pitch = a.number("pitch", 0.0f);
+  if (std::abs(c.pitch) >= 90.0f) a.fail("'pitch' must be within (-90, 90) degrees");
+  // Extensions: a thin lens and a shutter interval.
+  c.aperture = a.number("aperture", 0.0f);
+  c.focal_distance = a.number("focalDistance", 1.0f);
+  c.shutter = a.number("shutter", 0.0f);
+  if (c.aperture < 0.0f || !(c.focal_distance > 0.0f) || c.shutter < 0.0f)
+    a.fail("'aperture' and 'shutter' must be >= 0 and 'focalDistance' > 0");
+  a.finish();
+  if (e->FirstChildElement()) a.fail("takes no child elements");
+}
+
+void Loader::light(const XMLElement* e) {
+  XmlAttrs a(e, file);
+  Light l;
+  l.position = a.vec3("position");
+  l.radius = a.number("radius", 1.0f);
+  l.color = a.vec3("color", glm::vec3(1.0f));
+  l.intensity = a.number("intensity", 1.0f);
+  const glm::vec3 velocity = parse_motion(a, l.position);
+  if (!(l.radius > 0.0f)) a.fail("'radius' must be positive");
+  if (l.intensity < 0.0f || glm::any(glm::lessThan(l.color, glm::vec3(0.0f)))) a.fail("intensity and color must be >= 0");
+  a.finish();
+  if (e->FirstChildElement()) a.fail("takes no child elements");
+  // A light is an emissive sphere that next-event estimation also samples.
+  Material m = Emit{};
+  m.emission = l.radiance();
+  m.line = e->GetLineNum();
+  scene.materials.push_back(m);
+  Shape s;
+  s.kind = ShapeKind::Sphere;
+  s.a = l.position;
+  s.radius = l.radius;
+  s.material = int(scene.materials.size()) - 1;
+  s.light = int(scene.lights.size());
+  s.velocity = velocity;
+  s.dynamic = true;
+  s.line = e->GetLineNum();
+  l.shape = int(scene.shapes.size());
+  scene.shapes.push_back(s);
+  scene.lights.push_back(l);
+}
+
+void Loader::render_settings(const XMLElement* e) {
+  XmlAttrs a(e, file);
+  SceneRender& r = scene.render;
+  auto integer = [&](const char* name, float lo, float hi) {
+    const float v = a.number(name);
+    if (!(v >= lo && v <= hi && v == std::floor(v)))
+      a.fail("'" + std::string(name) + "' must be an integer in " + std::to_string(int(lo)) + ".." + std::to_string(int(hi)));
+    return int(v);
+  };
+  if (a.has("bounces")) r.bounces = integer("bounces", 1.0f, 64.0f);
+  if (a.has("samples")) r.samples = integer("samples", 0.0f, 16777216.0f);
+  if (a.has("mode")) {
+    RenderMode m;
+    if (!render_mode_from_name(a.text("mode").c_str(), &m)) a.fail("'mode' must be path, whitted or sh");
+    r.mode = m;
+  }
+  if (a.has("tonemap")) {
+    ToneMap t;
+    if (!tonemap_from_name(a.text("tonemap").c_str(), &t))
+      a.fail("'tonemap' must be one of none, linear, reinhard, filmic, srgb, uncharted2, aces");
+    r.tonemap = t;
+  }
+  if (a.has("exposure")) {
+    r.exposure = a.number("exposure");
+    if (!(*r.exposure > 0.0f && *r.exposure <= 1000.0f)) a.fail("'exposure' must be in (0, 1000]");
+  }
+  a.finish();
+  if (e->FirstChildElement()) a.fail("takes no child elements");
+}
+
+void Loader::root(const XMLElement* r) {
+  if (!r || std::strcmp(r->Name(), "SceneLevel") != 0) fail(r, "the root element must be <SceneLevel>");
+  XmlAttrs a(r, file);
+  scene.dot_weight = a.boolean("dotWeight", true);
+  a.finish();
+  bool have_camera = false, have_objects = false, have_env = false, have_render = false;
+  for (const XMLElement* e = r->FirstChildElement(); e; e = e->NextSiblingElement()) {
+    const char* n = e->Name();
+    if (!std::strcmp(n, "Camera")) {
+      if (have_camera) fail(e, "a second <Camera>");
+      have_camera = true;
+      camera(e);
+    } else if (!std::strcmp(n, "Light")) {
+      light(e);
+    } else if (!std::strcmp(n, "Environment")) {
+      if (have_env) fail(e, "a second <Environment>");
+      have_env = true;
+      environment(e);
+    } else if (!std::strcmp(n, "Render")) {
+      if (have_render) fail(e, "a second <Render>");
+      have_render = true;
+      render_settings(e);
+    } else if (!std::strcmp(n, "Objects")) {
+      if (have_objects) fail(e, "a second <Objects>");
+      have_objects = true;
+      XmlAttrs(e, file).finish();
+      for (const XMLElement* o = e->FirstChildElement(); o; o = o->NextSiblingElement()) shape(o);
+    } else {
+      fail(e, "unknown element <" + std::string(n) + "> in <SceneLevel>");
+    }
+  }
+  if (!have_camera) fail(r, "<SceneLevel> needs a <Camera>");
+  if (scene.shapes.empty()) fail(r, "the scene has no objects and no lights");
+}
+
+// Extension: <Environment color="r g b"/> (the constant radiance of rays that leave the
+// scene; default 0.5 grey, the seed's constant environment) or <Environment map="sky.hdr"
+// rotation="deg" intensity="k"/>.
+void Loader::environment(const XMLElement* e) {
+  XmlAttrs env(e, file);
+  Environment& en = scene.environment;
+  if (env.has("map") == env.has("color")) env.fail("give either 'color' or 'map'");
+  if (env.has("color")) {
+    en.color = env.vec3("color");
+    if (glm::any(glm::lessThan(en.color, glm::vec3(0.0f)))) env.fail("'color' must be >= 0");
+  } else {
+    en.map_path = resolve_path(env, env.text("map"));
+    en.map = load_env_image(env, en.map_path);
+    en.rotation = env.number("rotation", 0.0f);
+    en.intensity = env.number("intensity", 1.0f);
+    if (en.intensity < 0.0f || en.intensity > 1e6f) env.fail("'intensity' must be in [0, 1e6]");
+  }
+  env.finish();
+  if (e->FirstChildElement()) env.fail("takes no child elements");
+}
+
+}  // namespace pt
