@@ -1,4 +1,4 @@
-// The outer layer of a glTF file, checked before tinygltf parses it (mesh_gltf.cpp), and
+// The outer layer of a glTF file, checked before tinygltf parses it (gltf_buffers.cpp), and
 // tinygltf's error text made into our one-line messages. No tinygltf here: a small TU.
 #pragma once
 #include <cstddef>
