@@ -21,6 +21,7 @@
 #include "materials/formula_texture.h"
 #include "materials/formula_pow_texture.h"
 #include "materials/textured.h"
+#include "materials/metallic_roughness.h"
 
 namespace pt {
 

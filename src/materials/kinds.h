@@ -26,7 +26,8 @@
   X(PerlinTexture, perlin_texture, "PerlinTexture")          \
   X(FormulaTexture, formula_texture, "FormulaTexture")       \
   X(FormulaPowTexture, formula_pow_texture, "FormulaPowTexture") \
-  X(Textured, textured, "Textured")
+  X(Textured, textured, "Textured")                          \
+  X(MetallicRoughness, metallic_roughness, "MetallicRoughness")
 
 namespace pt {
 
