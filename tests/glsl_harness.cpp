@@ -1,5 +1,6 @@
 #include "glsl_harness.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "gl_context.h"
@@ -32,6 +33,21 @@ std::string glsl_material(const Material& m, const char* name) {
   }
   for (const char* l : material_glsl().locals) g += "  m." + std::string(l) + " = 0.0;\n";
   return g + "  return m;\n}\n";
+}
+
+float sampled_weight_error(const Material& m, glm::vec3 wo, int n) {
+  char decl[128];
+  std::snprintf(decl, sizeof decl, "const vec3 WO = vec3(%.9g, %.9g, %.9g);\n", double(wo.x), double(wo.y), double(wo.z));
+  GlslKernel k(glsl_material(m) + decl +
+               "vec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 99u), 0u);\n  BsdfSample s;\n"
+               "  if (!material_sample(make_material(), WO, true, vec3(rand01(), rand01(), rand01()), s)) return vec4(0.0);\n"
+               "  float pdf;\n  vec3 f = material_eval(make_material(), WO, s.wi, true, pdf);\n"
+               "  return vec4(abs(s.weight - f / pdf) / max(f / pdf, vec3(1e-6)), abs(pdf - s.pdf) / pdf);\n}\n");
+  k.program().use();
+  k.program().set("u_dot_weight", 1);
+  float worst = 0;
+  for (const glm::vec4& v : k.run(n)) worst = std::max({worst, v.x, v.y, v.z, v.w});
+  return worst;
 }
 
 Features all_features() {

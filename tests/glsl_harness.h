@@ -25,6 +25,10 @@ Features all_features();
 // kind's payload slots (the hit slots zero).
 std::string glsl_material(const Material& m, const char* name = "make_material");
 
+// The largest relative difference, over n samples of material m at incidence wo, between
+// a sample's weight and pdf and f cos / pdf and the pdf of the evaluated BSDF there.
+float sampled_weight_error(const Material& m, glm::vec3 wo, int n = 20000);
+
 class GlslKernel {
  public:
   explicit GlslKernel(const std::string& body, const Features& f = all_features());

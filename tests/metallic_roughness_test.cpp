@@ -72,15 +72,7 @@ TEST_CASE("MetallicRoughness: sampled weights equal f cos / pdf of the evaluated
   for (float metallic : {0.0f, 0.4f, 1.0f})
     for (float roughness : {0.2f, 0.7f}) {
       const Material m = MetallicRoughness{.baseColor = glm::vec3(0.8f, 0.5f, 0.2f), .metallic = metallic, .roughness = roughness};
-      GlslKernel k(glsl_material(m) + "const vec3 WO = vec3(0.6, 0.0, 0.8);\n"
-                   "vec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 99u), 0u);\n  BsdfSample s;\n"
-                   "  if (!material_sample(make_material(), WO, true, vec3(rand01(), rand01(), rand01()), s)) return vec4(0.0);\n"
-                   "  float pdf;\n  vec3 f = material_eval(make_material(), WO, s.wi, true, pdf);\n"
-                   "  return vec4(abs(s.weight - f / pdf) / max(f / pdf, vec3(1e-6)), abs(pdf - s.pdf) / pdf);\n}\n");
-      k.program().use();
-      k.program().set("u_dot_weight", 1);
-      float worst = 0;
-      for (const glm::vec4& v : k.run(20000)) worst = std::max({worst, v.x, v.y, v.z, v.w});
+      const float worst = sampled_weight_error(m, glm::vec3(0.6f, 0.0f, 0.8f));
       INFO("metallic " << metallic << " roughness " << roughness);
       CHECK(worst < 1e-4f);
     }
