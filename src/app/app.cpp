@@ -16,52 +16,12 @@
 namespace pt {
 namespace {
 
-// Frame pacing. WebGL calls only queue commands, so the CPU time of step() says little
-// about the GPU; but once the GPU falls behind, the browser delays the next animation
-// frame until the queued work is done. The interval between frames is the feedback: add a
-// pass while frames come faster than kFastFrameMs, scale the passes down to the target
-// when a frame took longer than kSlowFrameMs. A step whose CPU time exceeds the budget
-// means the call blocked on the GPU (a full command queue, or a blocking driver): stop.
-constexpr double kFastFrameMs = 20.0;
-constexpr double kSlowFrameMs = 28.0;
-constexpr double kTargetFrameMs = 22.0;
-constexpr double kCpuBudgetMs = 12.0;
-constexpr int kMaxPassesPerFrame = 64;
-// A draw is a tile of a sweep (Renderer::step): a band of rows or, at kMinBandRows
-// rows, part of such a band. When even one draw per frame keeps frames slower than
-// kSlowDrawFrameMs (under 30 UI frames/s: two frames in a row, or one twice as slow)
-// the draw shrinks: rows first, then columns, down to kMinBandRows x min_band_columns().
-// It grows back while frames are faster than kGrowDrawFrameMs: columns to the whole
-// width, then rows to the whole image, then more draws per frame. Growth is gentle
-// unless frames are fast: a software GL spends a large fixed time per frame (SwiftShader:
-// about 22 ms for compositing, the panel and the display pass at 960x640 on 2 cores,
-// docs/benchmarks.md), so a draw there may have a few milliseconds, and the pacer has to
-// settle at the largest such draw, not jump past it. A GPU paced by vsync gives frames
-// of 16.7 or 33.3 ms: it grows until frames take two intervals and stays there. Bands
-// keep at least 4 rows: SwiftShader hands pairs of pixel rows to its threads in turn,
-// so a thinner draw leaves one of two cores idle.
-constexpr int kFirstBandRows = 32;
-constexpr double kSlowDrawFrameMs = 34.0;
-constexpr double kGrowDrawFrameMs = 28.0;
-constexpr int kMinBandRows = 4;
-constexpr int kMinBandColumns = 128;
-// Nor are draws smaller than a sweep over this many draws (a bigger canvas, bigger draws):
-// at 30 frames/s a sweep then takes at most about 35 s.
-constexpr int kMaxDrawsPerSweep = 1024;
-// The interval between frames answers a change of the draw size a frame or two late
-// (the browser runs that far ahead of the GPU): no second change before then.
-constexpr int kDrawSettleFrames = 2;
-// How long a floor under the draw size (judge_shrink) holds before shrinking is tried again.
-constexpr double kDrawFloorMs = 5000.0;
+// The samples-per-second shown are measured over this window.
 constexpr double kRateWindowMs = 3000.0;
 
 constexpr float kLookDegPerPixel = 0.2f;
 constexpr double kSettleMs = 200.0;  // the camera counts as moving until this long after its last change
 constexpr float kTurnDegPerSecond = 90.0f;
-
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 }  // namespace
 
@@ -91,10 +51,9 @@ std::string json_number(double v) {
   return buf;
 }
 
-
 App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make_unique<Renderer>()) {
   settings_.sample_limit = options_.sample_limit;
-  settings_.band_rows = kFirstBandRows;  // the first frame of a heavy scene stays short
+  settings_.band_rows = FramePacer::kFirstBandRows;
   renderer_->set_settings(settings_);
   scan_scenes();
   env_panel_.scan(options_.env_root);
@@ -138,23 +97,6 @@ void App::scan_scenes() {
   for (fs::recursive_directory_iterator it(options_.scene_root, ec), end; !ec && it != end; it.increment(ec))
     if (it->is_regular_file() && it->path().extension() == ".xml") scene_files_.push_back(it->path().string());
   std::sort(scene_files_.begin(), scene_files_.end());
-}
-
-bool App::load_scene(const std::string& path, bool keep_camera) {
-  try {
-    // The XML is checked here; its meshes are read in slices (work()).
-    auto read = std::make_unique<SceneLoad>(read_scene_file(path), path);
-    error_.reset();
-    Loading l;
-    l.path = path;
-    l.read = std::move(read);
-    l.keep_camera = keep_camera && loads_ > 0;
-    begin_loading(std::move(l));
-    return true;
-  } catch (const std::exception& e) {
-    error_ = e.what();
-    return false;
-  }
 }
 
 void App::set_fixed_size(int w, int h) {
@@ -346,103 +288,10 @@ void App::draw_panel() {
   ImGui::End();
 }
 
-// The narrowest tile of a band of kMinBandRows rows.
-int App::min_band_columns() const {
-  const int w = renderer_->width(), h = renderer_->height();
-  const int per_sweep = (double(w) * h) / (double(kMaxDrawsPerSweep) * std::min(kMinBandRows, std::max(1, h))) + 1;
-  return std::min(w, std::max(kMinBandColumns, per_sweep));
-}
-
-// Scales the draw (band_rows x band_columns) by `factor` in pixels: whole rows down to
-// kMinBandRows, then columns down to min_band_columns(); the reverse when growing.
-void App::scale_draw(double factor) {
-  const int w = renderer_->width(), h = renderer_->height();
-  const int rows = settings_.band_rows > 0 ? std::min(settings_.band_rows, h) : h;
-  const int columns = settings_.band_columns > 0 && rows <= kMinBandRows ? std::min(settings_.band_columns, w) : w;
-  const double now = double(rows) * columns;
-  const double pixels = factor > 1.0 ? std::max(now * factor, now + 1.0) : std::min(now * factor, now - 1.0);
-  const int new_rows = std::clamp(int(pixels / w), std::min(kMinBandRows, h), h);
-  const int new_columns = new_rows > kMinBandRows || pixels >= double(kMinBandRows) * w
-                              ? w
-                              : std::clamp(int(pixels / kMinBandRows), min_band_columns(), w);
-  settings_.band_rows = new_rows >= h ? 0 : new_rows;
-  settings_.band_columns = new_columns >= w ? 0 : new_columns;
-  draw_settle_ = kDrawSettleFrames;
-}
-
-// Frames still slow after a shrink from shrink_from_pixels_ (frames then
-// shrink_from_ms_) to `pixels` (frames now `ms`): the difference prices a pixel. When
-// even the smallest draw would leave frames slower than kSlowDrawFrameMs, the fixed cost
-// of a frame is what makes them slow (a software GL at a large canvas, or a loaded
-// machine): smaller draws would only slow the sweep down, so the draw goes back to the
-// size before the shrink and stays at least that for kDrawFloorMs. True when it did.
-bool App::judge_shrink(double pixels, double ms, double now_ms) {
-  const double from = shrink_from_pixels_;
-  shrink_from_pixels_ = 0.0;
-  if (from <= pixels) return false;
-  const double per_pixel = std::max(0.0, (shrink_from_ms_ - ms) / (from - pixels));
-  const double smallest = double(std::min(kMinBandRows, renderer_->height())) * min_band_columns();
-  if (ms - per_pixel * std::max(0.0, pixels - smallest) <= kSlowDrawFrameMs) return false;
-  floor_pixels_ = from;
-  floor_set_ms_ = now_ms;
-  scale_draw(from / pixels);
-  return true;
-}
-
 void App::render_passes(double now_ms, double dt_ms) {
-  // The interval since the last frame measures the work queued then (and the hidden time
-  // of a background tab, after which the count simply grows back).
-  const bool whole = (settings_.band_rows <= 0 || settings_.band_rows >= renderer_->height()) &&
-                     (settings_.band_columns <= 0 || settings_.band_columns >= renderer_->width());
-  const bool smallest = settings_.band_rows == std::min(kMinBandRows, renderer_->height()) &&
-                        settings_.band_columns == (min_band_columns() < renderer_->width() ? min_band_columns() : 0);
-  const double pixels = double(settings_.band_rows > 0 ? std::min(settings_.band_rows, renderer_->height()) : renderer_->height()) *
-                        (settings_.band_columns > 0 ? std::min(settings_.band_columns, renderer_->width()) : renderer_->width());
-  const bool settled = draw_settle_ == 0;
-  if (draw_settle_ > 0) --draw_settle_;
-  // The draw size follows two frames, not one: a browser catching up after a long frame
-  // delivers the next one at once (short), and a single slow frame may be a hiccup.
-  const double slower = std::max(dt_ms, prev_dt_ms_), faster = std::min(dt_ms, prev_dt_ms_);
-  prev_dt_ms_ = dt_ms;
-  if (dt_ms > kSlowFrameMs && !preparing() && settled) {  // frames slowed by a preparation say nothing of the draws
-    if (passes_per_frame_ > 1) {
-      passes_per_frame_ = std::max(1, int(std::min(0.9, kTargetFrameMs / dt_ms) * passes_per_frame_));
-    } else if (dt_ms > 2.0 * kSlowDrawFrameMs) {  // far too slow: the draw, surely; shrink at once
-      shrink_from_pixels_ = 0.0;
-      if (!smallest) scale_draw(std::min(0.5, kTargetFrameMs / dt_ms));
-    } else if (faster > kSlowDrawFrameMs && !judge_shrink(pixels, faster, now_ms) && !smallest && pixels > floor_pixels_) {
-      shrink_from_pixels_ = pixels;
-      shrink_from_ms_ = faster;
-      scale_draw(0.7);
-    }
-  }
-  if (now_ms - floor_set_ms_ > kDrawFloorMs) floor_pixels_ = 0.0;
-
   if (renderer_->samples() == 0 && !renderer_->mid_sweep()) restart_ms_ = now_ms;
-  const auto t0 = std::chrono::steady_clock::now();
-  int done = 0;
-  // While a scene is being prepared, one draw per frame: the preparation gets the time
-  // (and, with a software GPU, the CPU) that more draws would take.
-  const int passes = preparing() ? 1 : passes_per_frame_;
-  const double image_pixels = std::max(1.0, double(renderer_->width()) * renderer_->height());
-  while (done < passes && !renderer_->converged()) {
-    renderer_->step();
-    // Samples count as they are drawn, in fractions of the image: a sweep of small tiles
-    // on a slow GPU may take longer than the rate's window.
-    total_samples_ += double(renderer_->last_draw_samples()) / image_pixels;
-    ++done;
-    if (ms_since(t0) > kCpuBudgetMs) break;
-  }
-  // Grow only when this frame used all its passes, else an idle (converged) image would
-  // ratchet the count up and the next restart would start with one very long frame.
-  if (dt_ms > 0 && done == passes_per_frame_ && !preparing() && settled) {
-    if (!whole && slower < kGrowDrawFrameMs) {
-      shrink_from_pixels_ = 0.0;  // a shrink that let frames get fast did its job
-      scale_draw(slower < kFastFrameMs ? 2.0 : 1.25);
-    }
-    else if (whole && dt_ms < kFastFrameMs) passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
-  }
-
+  // The draws of this frame, sized by the interval between frames (render/pacing.h).
+  const int done = pacer_.frame(*renderer_, settings_, dt_ms, now_ms, preparing(), total_samples_);
   if (!renderer_->converged()) done_ms_ = -1.0;  // a raised limit resumes the clock
   else if (done_ms_ < 0) done_ms_ = now_ms;
   if (done == 0) {
@@ -511,7 +360,7 @@ std::string App::stats_json() const {
   j += ",\"sampleLimit\":" + std::to_string(settings_.sample_limit);
   j += ",\"view\":" + json_string(view_query());
   j += ",\"samplesPerSecond\":" + json_number(samples_per_second_);
-  j += ",\"passesPerFrame\":" + std::to_string(passes_per_frame_);
+  j += ",\"passesPerFrame\":" + std::to_string(pacer_.passes_per_frame());
   j += ",\"bandRows\":" + std::to_string(settings_.band_rows);
   j += ",\"bandColumns\":" + std::to_string(settings_.band_columns);
   j += ",\"width\":" + std::to_string(renderer_->width());
@@ -536,17 +385,11 @@ std::string App::stats_json() const {
   return j + "}";
 }
 
-std::string App::load_stage() const {
-  if (!loading_) return "";
-  const Loading& l = *loading_;
-  return l.read ? l.read->stage() : !l.pack ? "starting the packing" : !l.packed ? l.pack->stage() : l.staged && l.staged->done() ? "compiling" : "uploading";
-}
-
 // The scene on its way (null when none) and the last one's preparation.
 std::string App::load_fields() const {
   std::string j = "\"loading\":";
   if (loading_) {
-    j += "{\"scene\":" + json_string(loading_->path) + ",\"stage\":" + json_string(load_stage()) +
+    j += "{\"scene\":" + json_string(loading_->pipe->path()) + ",\"stage\":" + json_string(load_stage()) +
          ",\"progress\":" + json_number(load_progress()) + "}";
   } else {
     j += "null";
