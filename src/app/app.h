@@ -1,6 +1,8 @@
 // The interactive application: owns the Renderer, the current scene, the Dear ImGui panel
 // and the camera controls. The platform creates the GL context and the ImGui backends,
 // and calls frame() once per displayed frame between ImGui::NewFrame() and ImGui::Render().
+// Its parts: app.cpp (the frame), app_panel.cpp, app_loading.cpp, app_interaction.cpp,
+// app_stats.cpp.
 #pragma once
 #include <chrono>
 #include <cstdint>

@@ -15,7 +15,7 @@
 
 namespace pt {
 
-std::string json_string(const std::string& s);  // app.cpp
+std::string json_string(const std::string& s);  // app_stats.cpp
 
 namespace {
 
