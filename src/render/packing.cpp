@@ -385,7 +385,6 @@ PackedScene pack_values(const Scene& scene) {
   PackedScene p;
   pack_materials(scene, p);
   pack_shapes(scene, p);
-  p.light_shape = light_shapes(scene);
   return p;
 }
 

@@ -24,7 +24,7 @@ struct PackedScene {
   // records): each light record's shape (Renderer::update_values compares them); for
   // refit_shape, each BVH node's parent (-1: the root), each primitive's leaf (-1:
   // unbounded) and each analytic shape's or lone triangle's primitive (-1: none). A
-  // PackedScene of pack_values has only light_shape.
+  // PackedScene of pack_values has none of them.
   std::vector<int> light_shape;
   std::vector<int> node_parent, prim_leaf, shape_prim;
 };

@@ -31,7 +31,7 @@ const char* kRoles = R"(<SceneLevel><Camera position="0 0 3" yaw="90" pitch="0"/
 void check_tables(const Scene& scene, const PackedScene& p) {
   REQUIRE(p.light_shape.size() == size_t(p.lights.count()));
   for (int i = 0; i < p.lights.count(); ++i) CHECK(p.light_shape[size_t(i)] == int(p.lights.get(i, light_rec::shape)));
-  CHECK(pack_values(scene).light_shape == p.light_shape);
+  CHECK(light_shapes(scene) == p.light_shape);
 
   REQUIRE(p.node_parent.size() == size_t(p.nodes.count()));
   REQUIRE(p.prim_leaf.size() == size_t(p.prims.count()));

@@ -112,7 +112,7 @@ bool Renderer::update_values(const Scene& scene) {
   // Another environment map is an upload of it (set_environment), when it fits this GPU;
   // else set_scene says why.
   if (const auto& m = scene.environment.map; m && std::max(m->width, m->height) + 1 > limits_.max_texture_size) return false;
-  if (!scene_.update_values(pack_values(scene))) return false;
+  if (!scene_.update_values(pack_values(scene), light_shapes(scene))) return false;
   scene_.set_environment(scene.environment, settings_.mode);
   restart();
   return true;

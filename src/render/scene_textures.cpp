@@ -63,9 +63,9 @@ void SceneTextures::set(const Scene& scene, const PackedScene& p, StagedScene& s
   dot_weight_ = scene.dot_weight;
 }
 
-bool SceneTextures::update_values(const PackedScene& p) {
+bool SceneTextures::update_values(const PackedScene& p, const std::vector<int>& light_shapes) {
   // The same shapes must be lights, in the same order (each light record names its shape).
-  if (p.lights.count() != num_lights_ || p.shapes.count() != num_shapes_ || p.light_shape != light_shapes_) return false;
+  if (p.lights.count() != num_lights_ || p.shapes.count() != num_shapes_ || light_shapes != light_shapes_) return false;
   shape_tex_ = upload(p.shapes);
   material_tex_ = upload(p.materials);
   light_tex_ = upload(p.lights);

@@ -25,9 +25,10 @@ class SceneTextures {
   // The scene's records, taken from `staged` (uploaded: done()), and its image maps
   // (`maps`: built when the scene is textured, else null). The environment is set apart.
   void set(const Scene& scene, const PackedScene& p, StagedScene& staged, const MapArray* maps);
-  // An edit of values: the shape, material and light records again (pack_values). false,
-  // changing nothing, when another set of shapes are lights (set() says why not).
-  bool update_values(const PackedScene& values);
+  // An edit of values: the shape, material and light records again (pack_values), whose
+  // lights are those of `light_shapes` (packing.h). false, changing nothing, when other
+  // shapes are lights than those set (Renderer::set_scene then says why not).
+  bool update_values(const PackedScene& values, const std::vector<int>& light_shapes);
   // An edit that moved shapes (refit_shape): the rows of the records it changed.
   void update_rows(const PackedScene& p, const std::vector<int>& prims, const std::vector<int>& nodes);
   // The environment's textures (a new map only: rotation and intensity are uniforms) and,
