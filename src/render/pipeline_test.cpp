@@ -140,7 +140,7 @@ TEST_CASE("a failure in a slice names its file and leaves the renderer's scene",
   CHECK_THROWS_AS(ScenePipeline(scene_file("absent.xml", "") + ".none", &r), InputError);  // no such file
 }
 
-TEST_CASE("a scene in memory starts at the packing; a lost context stages it again", "[gpu][pipeline]") {
+TEST_CASE("a scene in memory starts at the packing, and a lost context stages it again", "[gpu][pipeline]") {
   test_gl();
   const std::string path = scene_file("memory.xml", kScene);
   const std::vector<float> want = reference(path);
@@ -161,7 +161,7 @@ TEST_CASE("a scene in memory starts at the packing; a lost context stages it aga
   CHECK(render(r, 2) == want);
 }
 
-TEST_CASE("without a renderer the pipeline reads and packs only; on_read may change the scene", "[pipeline]") {
+TEST_CASE("without a renderer the pipeline reads and packs only, and on_read may change the scene", "[pipeline]") {
   const std::string path = scene_file("nogl.xml", kScene);
   ScenePipeline p(path);
   int calls = 0;
