@@ -3,7 +3,7 @@
 # shell (Debian's emcc cannot minify HTML, so it never writes the page itself).
 
 add_executable(pathtracer_web
-  "${CMAKE_SOURCE_DIR}/src/app/app.cpp"
+  "${CMAKE_SOURCE_DIR}/src/app/app.cpp" "${CMAKE_SOURCE_DIR}/src/app/app_loading.cpp" "${CMAKE_SOURCE_DIR}/src/app/app_panel.cpp" "${CMAKE_SOURCE_DIR}/src/app/app_stats.cpp"
   "${CMAKE_SOURCE_DIR}/src/app/env_panel.cpp"
   "${CMAKE_SOURCE_DIR}/src/app/app_interaction.cpp"
   "${CMAKE_SOURCE_DIR}/src/platform/web.cpp"

@@ -1,6 +1,8 @@
 // The interactive application: owns the Renderer, the current scene, the Dear ImGui panel
 // and the camera controls. The platform creates the GL context and the ImGui backends,
 // and calls frame() once per displayed frame between ImGui::NewFrame() and ImGui::Render().
+// Its parts: app.cpp (the frame), app_panel.cpp, app_loading.cpp, app_interaction.cpp,
+// app_stats.cpp.
 #pragma once
 #include <chrono>
 #include <cstdint>
@@ -13,11 +15,11 @@
 #include "app/env_panel.h"
 #include "gpu/texture.h"
 #include "render/packing.h"
+#include "render/pacing.h"
+#include "render/pipeline.h"
 #include "render/renderer.h"
 #include "render/scene_render.h"
-#include "render/staged_scene.h"
 #include "scene/scene.h"
-#include "scene/xml_loader.h"
 
 namespace pt {
 
@@ -74,8 +76,8 @@ class App {
   // calls it between animation frames (web.cpp), so the build uses the time the frames
   // leave idle; frame() does a slice too.
   bool work(double budget_ms);
-  // work() has more to do: packing, or uploading the record textures.
-  bool preparing() const { return loading_ && !(loading_->staged && loading_->staged->done()); }
+  // work() has more to do: reading, packing, or uploading the record textures.
+  bool preparing() const { return loading_ && loading_->pipe->preparing(); }
   const Scene& scene() const { return scene_; }
   std::string scene_files_json() const;                  // Scene::files of the current scene
   // The platform: keys move the camera only while the canvas has keyboard focus.
@@ -92,18 +94,16 @@ class App {
   void draw_panel();
   void draw_scene_controls();
   void render_passes(double now_ms, double dt_ms);
-  void scale_draw(double factor);
-  int min_band_columns() const;
-  bool judge_shrink(double pixels, double ms, double now_ms);
   void present(int fb_w, int fb_h);
   void scan_scenes();
-  // app_interaction.cpp: scene switching, picking and the selection panel, render size.
-  // edit: the shown scene again (an edit, a lost context): the page's settings are kept.
+  // app_loading.cpp: scenes through the pipeline. edit: the shown scene again (an edit, a
+  // lost context): the page's settings are kept.
   void start_loading(Scene scene, bool keep_camera, bool edit = false);
-  void apply_scene(Scene scene, const PackedScene& packed, StagedScene* staged, const std::optional<Camera>& camera);
+  void apply_scene(ScenePipeline& pipe, const std::optional<Camera>& camera);
   void poll_loading();
-  void scene_edited(int moved_shape);  // after a panel changed scene_ (-1: no shape moved)
   void draw_loading();
+  // app_interaction.cpp: picking and the selection panel, render size.
+  void scene_edited(int moved_shape);  // after a panel changed scene_ (-1: no shape moved)
   void handle_click();
   void draw_selection_panel(int fb_w);
   void draw_view_controls();
@@ -118,13 +118,9 @@ class App {
   std::optional<std::string> error_;
   EnvPanel env_panel_;
 
-  // Frame pacing: the number of passes per frame adapts to the interval between frames.
+  // Frame pacing: the draws per frame and their size follow the interval between frames.
   double last_frame_ms_ = -1.0;
-  int passes_per_frame_ = 1;
-  int draw_settle_ = 0;  // frames before the draw size may change again
-  double prev_dt_ms_ = 0.0;  // the interval before the last one
-  double shrink_from_pixels_ = 0.0, shrink_from_ms_ = 0.0;  // the last shrink: draw size and frame time before it
-  double floor_pixels_ = 0.0, floor_set_ms_ = -1e9;  // no shrink below this, for a while (judge_shrink)
+  FramePacer pacer_;
 
   // Progress: samples per second over the last few seconds of rendering (frames can be
   // slow: with a software GPU one pass may take most of a second); elapsed time since the
@@ -151,33 +147,22 @@ class App {
   Texture present_tex_;
   Framebuffer present_fbo_;
 
-  // A loaded scene being packed in slices, then waiting for its program; applied by
-  // poll_loading once both are done.
+  // A scene on its way through the pipeline (read, packed, uploaded in slices, then
+  // waiting for its program); applied by poll_loading once ready.
   struct Loading {
-    std::string path;
-    std::unique_ptr<SceneLoad> read;  // first its meshes are read or generated in slices
-    std::unique_ptr<Scene> scene;  // then it is packed; at a fixed address: the job reads it
-    std::unique_ptr<PackJob> pack;
-    std::optional<PackedScene> packed;
-    std::unique_ptr<StagedScene> staged;  // its record textures, uploaded a band per frame
+    std::unique_ptr<ScenePipeline> pipe;
     bool keep_camera = false;      // the view then is kept, else the scene's is shown
     bool edit = false;             // an edit of the shown scene (scene_edited), not a load
     std::chrono::steady_clock::time_point since;  // when it was asked for
-    double work_ms = 0.0;           // time spent in slices of the packing
     double longest_slice_ms = 0.0;  // the longest slice of any stage, and its stage
     std::string longest_slice_stage;
-    double read_ms = 0.0;                          // time spent in slices of reading the meshes
-    int read_slices = 0;
-    double upload_ms = 0.0;
-    int slices = 0;
   };
   // The settings a loaded scene is shown with: the page's, and the scene's <Render> where
   // the page's link did not set them (on the first scene), clamped to the panel's ranges.
   RenderSettings shown_settings(const Scene& scene) const;
   UserSet link_set() const;  // what the page's link set on the first scene: the scene's <Render> leaves it
-  RenderMode mode_for(const Loading& l) const;  // the program mode of a scene on its way
+  ScenePipeline::ModeFor mode_for(bool edit);  // the program mode of a scene on its way
   void begin_loading(Loading l);    // as loading_, replacing one in progress
-  void start_packing(Loading& l);   // once l.scene is read
   void load_failed(std::string path, std::string why);
   std::string load_fields() const;
   std::string load_stage() const;  // of the scene on its way: "reading model.glb", "building the BVH", ...

@@ -1,7 +1,6 @@
-// The App's interaction beyond the main panel: switching scenes (and waiting for a
-// program compiling in the background), picking and editing the selected object, the
-// render size (resolution scale, reduced while the camera moves), and re-creating every
-// GL object after a lost context.
+// The App's interaction beyond the main panel: picking and editing the selected object
+// (an edit re-packs through app_loading.cpp when the BVH cannot be refitted) and the render
+// size (resolution scale, reduced while the camera moves).
 #include <algorithm>
 #include <cmath>
 
@@ -16,216 +15,19 @@
 
 namespace pt {
 
-std::string json_string(const std::string& s);  // app.cpp
+std::string json_string(const std::string& s);  // app_stats.cpp
 
 namespace {
 
 constexpr float kMotionScale = 0.5f;       // of the render size, per axis, while the camera moves
 constexpr float kClickSlopPixels = 4.0f;   // a press and release closer than this is a click, not a drag
-// Scene preparation: each frame reads and packs for about this long (the page adds slices
-// between frames), checking the clock every kWorkUnits units of either (a unit is about a
-// triangle, a vertex, a BVH node or 64 bytes of a file: 0.1-0.5 ms).
-constexpr double kFrameWorkMs = 4.0;
-constexpr long kWorkUnits = 8192;
-constexpr int kUploadRows = 1;  // rows of record texels per upload call (64 KB)
-
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 }  // namespace
-
-void App::start_loading(Scene scene, bool keep_camera, bool edit) {
-  Loading l;
-  l.path = scene.path;
-  l.edit = edit;
-  l.scene = std::make_unique<Scene>(std::move(scene));
-  start_packing(l);
-  l.keep_camera = keep_camera;
-  begin_loading(std::move(l));
-}
-
-void App::begin_loading(Loading l) {
-  packed_.reset();  // the shown scene's packing is not edited while another is prepared
-  l.since = std::chrono::steady_clock::now();
-  loading_ = std::move(l);  // a newer request replaces one in progress
-}
-
-void App::start_packing(Loading& l) {
-  renderer_->program_ready(*l.scene, mode_for(l));  // its program starts building alongside the packing
-  l.pack = std::make_unique<PackJob>(*l.scene);
-}
-
-bool App::work(double budget_ms) {
-  if (!preparing()) return false;
-  Loading& l = *loading_;
-  const std::string stage = load_stage();
-  const auto t0 = std::chrono::steady_clock::now();
-  // The stages in order, as many as the budget allows: a small scene loads in one slice.
-  // A long step (starting the packing, creating the record textures) starts a stage only
-  // with the budget untouched, so that it never adds to another stage's slice.
-  auto fresh = [&] { return ms_since(t0) < 1.0; };
-  try {
-    do {
-      const auto ts = std::chrono::steady_clock::now();
-      if (l.read) {
-        bool done = false;
-        while (!(done = l.read->run(kWorkUnits)) && ms_since(t0) < budget_ms) {
-        }
-        l.read_ms += ms_since(ts);
-        ++l.read_slices;
-        if (done) {
-          l.scene = std::make_unique<Scene>(l.read->take());
-          l.read.reset();
-          std::printf("scene %s: read in %d slices (%.0f ms of work, %.0f ms after the request)\n", l.path.c_str(), l.read_slices,
-                      l.read_ms, ms_since(l.since));
-        }
-      } else if (!l.pack) {
-        if (!fresh() && l.scene->meshes.size() > 0) break;  // the program's build starts: 10+ ms in the page
-        start_packing(l);
-      } else if (!l.packed) {
-        bool done = false;
-        while (!(done = l.pack->run(kWorkUnits)) && ms_since(t0) < budget_ms) {
-        }
-        if (done) l.packed = l.pack->take();
-        l.work_ms += ms_since(ts);
-        ++l.slices;
-      } else if (!l.staged) {
-        if (!fresh() && l.packed->prims.count() > kDataWidth) break;  // large textures: their own slice
-        l.staged = std::make_unique<StagedScene>(renderer_->limits(), *l.packed);
-        l.upload_ms += ms_since(ts);
-      } else {
-        // The record textures, a row at a time (copies to the GPU; WebGL calls between
-        // animation frames are fine, and a lost context drops `staged`).
-        while (!l.staged->upload(kUploadRows) && ms_since(t0) < budget_ms) {
-        }
-        l.upload_ms += ms_since(ts);
-      }
-    } while (preparing() && ms_since(t0) < budget_ms);
-  } catch (const std::exception& e) {
-    load_failed(l.path, e.what());
-    return false;
-  }
-  if (const double ms = ms_since(t0); ms > l.longest_slice_ms) {
-    l.longest_slice_ms = ms;  // of any stage (reading, packing, uploading), and which
-    l.longest_slice_stage = stage;
-  }
-  return preparing();
-}
-
-void App::load_failed(std::string path, std::string why) {  // copies: loading_ holds the originals
-  loading_.reset();
-  error_ = why;
-  if (loads_ == 0) {
-    // Nothing rendered yet, so there is no previous scene to keep: fall back to the
-    // default one, but keep showing why the requested scene failed.
-    const std::string fallback = AppOptions{}.scene;
-    if (path != fallback && load_scene(fallback)) error_ = why;
-  } else if (!shown_) {
-    start_loading(scene_, true, true);  // after a lost context: the kept scene again
-  }
-}
-
-void App::poll_loading() {
-  work(kFrameWorkMs);  // the frame's own slice; the page adds slices between frames
-  if (!loading_) return;
-  const std::string path = loading_->path;
-  try {
-    if (preparing() || !renderer_->program_ready(*loading_->scene, mode_for(*loading_))) return;
-    Loading l = std::move(*loading_);
-    loading_.reset();
-    std::optional<Camera> camera;
-    if (l.keep_camera) camera = renderer_->camera();
-    const auto t1 = std::chrono::steady_clock::now();
-    if (l.edit) {  // scene_ is the edited scene (or newer): only the renderer changes
-      renderer_->set_scene(*l.scene, *l.packed, l.staged.get());
-      renderer_->set_camera(*camera);
-      shown_ = true;
-    } else {
-      apply_scene(std::move(*l.scene), *l.packed, l.staged.get(), camera);  // throws before changing anything if the program does not build
-    }
-    packed_ = std::move(l.packed);  // kept for refitting the shown scene's BVH after an edit
-    last_load_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - l.since).count();
-    last_pack_work_ms_ = l.work_ms;
-    last_slices_ = l.slices;
-    last_longest_slice_ms_ = l.longest_slice_ms;
-    last_longest_slice_stage_ = l.longest_slice_stage;
-    last_read_ms_ = l.read_ms;
-    last_read_slices_ = l.read_slices;
-    const Renderer::BvhStats& b = renderer_->bvh_stats();
-    std::printf("scene %s: BVH of %d primitives built in %.0f ms; packed in %d slices (%.0f ms, the longest %.0f ms); "
-                "uploaded in %.0f ms; scene set in %.0f ms; ready %.0f ms after the request\n",
-                scene_.path.c_str(), b.primitives, b.build_ms, l.slices, l.work_ms, l.longest_slice_ms, l.upload_ms, ms_since(t1),
-                last_load_ms_);
-  } catch (const std::exception& e) {
-    load_failed(path, e.what());
-  }
-}
-
-UserSet App::link_set() const {
-  const bool first = loads_ == 0;  // what the page's link set wins on the first scene only
-  return {first && options_.bounces.has_value(), false, first && options_.tonemap.has_value(), first && options_.exposure.has_value(),
-          first && options_.sample_limit > 0};
-}
-
-RenderSettings App::shown_settings(const Scene& scene) const {
-  RenderSettings s = with_scene_render(settings_, scene.render, link_set());
-  s.max_bounces = std::clamp(s.max_bounces, 1, 16);  // the panel's range
-  return s;
-}
-
-RenderMode App::mode_for(const Loading& l) const { return l.edit || !l.scene ? settings_.mode : shown_settings(*l.scene).mode; }
-
-void App::apply_scene(Scene scene, const PackedScene& packed, StagedScene* staged, const std::optional<Camera>& camera) {
-  // The scene's <Render>, on every load and reload (an author's edit of it applies), set
-  // with the scene: its program (mode) was built ahead.
-  const RenderSettings next = shown_settings(scene);
-  renderer_->set_scene(scene, packed, staged, &next);  // throws before changing anything if the program does not build
-  shown_ = true;
-  env_panel_.scene_loaded(scene.environment);
-  if (camera) {
-    renderer_->set_camera(*camera);
-  } else if (loads_ == 0 && (options_.camera_position || options_.camera_yaw_pitch)) {
-    Camera c = renderer_->camera();  // the first scene: a view from a link
-    if (options_.camera_position) c.position = *options_.camera_position;
-    if (options_.camera_yaw_pitch) {
-      c.yaw = options_.camera_yaw_pitch->x;
-      c.pitch = std::clamp(options_.camera_yaw_pitch->y, -89.0f, 89.0f);
-    }
-    renderer_->set_camera(c);
-  }
-  if (scene.render.exposure && !link_set().exposure) auto_exposure_ = false;  // the scene's exposure applied
-  settings_ = next;
-  // A reload keeps the selection when the object is still there.
-  if (selected_ >= int(scene.shapes.size()) || scene.path != scene_.path) selected_ = -1;
-  scene_ = std::move(scene);
-  ++loads_;
-}
 
 std::string App::scene_files_json() const {
   std::string j = "[";
   for (const std::string& f : scene_.files) j += (j.size() > 1 ? "," : "") + json_string(f);
   return j + "]";
-}
-
-void App::context_restored() {
-  // Every GL name held is stale: drop the offscreen target and the renderer (deleting
-  // stale names does nothing), then build them again from the kept scene model.
-  const Camera camera = renderer_->camera();
-  present_fbo_ = Framebuffer();
-  present_tex_ = Texture();
-  renderer_ = std::make_unique<Renderer>();
-  renderer_->set_settings(settings_);
-  renderer_->set_camera(camera);
-  shown_ = false;
-  // The kept scene is packed again (in slices), unless another is on its way; should that
-  // one fail, load_failed brings the kept one back.
-  if (loading_) {
-    loading_->staged.reset();  // its textures were the lost context's
-    if (loading_->scene) renderer_->program_ready(*loading_->scene, mode_for(*loading_));
-  }
-  else if (loads_ > 0) start_loading(scene_, true, true);
-  ++context_restores_;
 }
 
 glm::ivec2 App::render_size(int fb_w, int fb_h, double now_ms) const {
@@ -321,38 +123,6 @@ void App::draw_view_controls() {
   if (limit > 0 && n < limit && samples_per_second_ > 0.0)
     ImGui::Text("remaining  %.1f s to %d samples", double(limit - n) / samples_per_second_, limit);
   draw_loading();
-}
-
-// The whole preparation: packing (its stages weighted in PackJob::progress), then the
-// upload, which took about a tenth as long for a large mesh.
-double App::load_progress() const {
-  if (!loading_) return 1.0;
-  const Loading& l = *loading_;
-  // Reading the meshes (a scene's first part of the bar), then packing and uploading.
-  constexpr double kReadShare = 0.3;
-  if (l.read) return kReadShare * l.read->progress();
-  const double rest = l.packed ? 0.9 + 0.1 * (l.staged ? l.staged->progress() : 0.0) : l.pack ? 0.9 * l.pack->progress() : 0.0;
-  return l.read_slices > 0 ? kReadShare + (1.0 - kReadShare) * rest : rest;
-}
-
-// A scene on its way: what is being done, and how far (the page keeps drawing meanwhile).
-void App::draw_loading() {
-  if (!loading_) return;
-  const Loading& l = *loading_;
-  const std::string& path = l.path;
-  const size_t slash = path.find_last_of('/');
-  ImGui::Text("loading %s", slash == std::string::npos ? path.c_str() : path.c_str() + slash + 1);
-  char overlay[96];
-  const double s = ms_since(l.since) * 1e-3;
-  if (l.packed && !(l.staged && l.staged->done())) {
-    std::snprintf(overlay, sizeof overlay, "uploading %.0f%%  %.1f s", 100.0 * load_progress(), s);
-  } else if (l.packed) {
-    const char* frames = "|/-\\";  // a spinner: the driver compiles in the background
-    std::snprintf(overlay, sizeof overlay, "compiling shader %c %.1f s", frames[int(last_frame_ms_ / 120.0) & 3], s);
-  } else {
-    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", load_stage().c_str(), 100.0 * load_progress(), s);
-  }
-  ImGui::ProgressBar(float(load_progress()), ImVec2(ImGui::GetFontSize() * 20.0f, 0.0f), overlay);
 }
 
 }  // namespace pt

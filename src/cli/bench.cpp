@@ -19,14 +19,15 @@
 #include "render/pacing.h"
 #include "gpu/gl.h"
 #include "platform/egl.h"
-#include "scene/xml_loader.h"
+#include "render/pipeline.h"
 
 namespace pt::cli {
 
 int run_bench(const Options& o) {
   if (o.reference.empty() == (o.reference_value < 0)) usage_error("bench needs one of --reference or --reference-value");
   const double duration = o.seconds > 0 ? o.seconds : 10.0;
-  const Scene scene = load_scene(o);
+  const std::unique_ptr<ScenePipeline> pipe = read_scene(o);
+  const Scene& scene = pipe->scene();
   std::vector<float> ref(4, float(o.reference_value));
   if (!o.reference.empty()) {
     FloatImage img = load_float_image(o.reference);  // an error names the file and where it broke
@@ -43,7 +44,8 @@ int run_bench(const Options& o) {
   RenderSettings settings = settings_for(o, scene);
   settings.sample_limit = 0;
   r.set_settings(settings);
-  r.set_scene(scene);
+  pipe->attach(r);
+  pipe->finish();
   std::printf("shader: %zu bytes, compiled and linked in %.1f ms\n", r.integrator_source().text.size(), r.compile_ms());
   r.warm_up();  // outside the clock: the driver's first-use work
 

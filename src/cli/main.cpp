@@ -1,9 +1,11 @@
-// The native command line: render, bench and plot, headless through EGL.
+// The native command line: render, bench, plot, watch and slices, headless through EGL.
+// Every command gets its scene through the one scene pipeline (render/pipeline.h).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,8 +15,7 @@
 #include "render/pacing.h"
 #include "gpu/gl.h"
 #include "platform/egl.h"
-#include "render/packing.h"
-#include "scene/xml_loader.h"
+#include "render/pipeline.h"
 
 namespace pt::cli {
 namespace {
@@ -35,7 +36,8 @@ int run_render(const Options& o) {
     if (!ends_with(out, ".png") && !ends_with(out, ".hdr") && !ends_with(out, ".pfm"))
       usage_error("--out must end in .png, .hdr or .pfm");
   const auto tl = std::chrono::steady_clock::now();
-  const Scene scene = load_scene(o);  // before GL: bad input fails fast
+  const std::unique_ptr<ScenePipeline> pipe = read_scene(o);  // before GL: bad input fails fast
+  const Scene& scene = pipe->scene();
   const double load_ms = seconds_since(tl) * 1e3;
   HeadlessGl gl;
   std::printf("GL: %s\n", gl.description().c_str());
@@ -45,7 +47,8 @@ int run_render(const Options& o) {
   settings.spp_per_pass = o.per_pass > 0 ? o.per_pass : 1;
   r.set_settings(settings);
   const auto ts = std::chrono::steady_clock::now();
-  r.set_scene(scene);
+  pipe->attach(r);
+  pipe->finish();  // packed, staged, compiled and set
   glFinish();
   const double set_ms = seconds_since(ts) * 1e3 - r.compile_ms();
   std::printf("scene: %s (%zu objects, %zu materials, %zu lights), loaded in %.0f ms\n", o.scene.c_str(), scene.shapes.size(),
@@ -99,13 +102,15 @@ int run_render(const Options& o) {
   return st.bad == 0 && counters.bad_samples == 0 ? 0 : 3;
 }
 
-// The page's preparation of a scene, natively and without GL: the meshes read or
-// generated (SceneLoad), then the packing and BVH (PackJob), each run in slices of `units`
-// as the page runs them; per stage, the work's time, the slices and the longest slice.
+// The page's preparation of a scene, natively and without GL: the scene pipeline
+// (render/pipeline.h) reading its meshes (SceneLoad), then packing it and building the BVH
+// (PackJob), each stage in slices of `units` as the page runs them; per stage, the work's
+// time, the slices and the longest slice (the steps between stages, such as starting the
+// packing, are not slices and not listed).
 int run_slices(int argc, char** argv) {
   if (argc < 1 || argc > 2) usage_error("slices takes SCENE.xml [UNITS]");
   const std::string path = argv[0];
-  const long units = argc > 1 ? std::max(1L, std::atol(argv[1])) : 8192L;
+  const long units = argc > 1 ? std::max(1L, std::atol(argv[1])) : ScenePipeline::kWorkUnits;
   struct Stage {
     double ms = 0.0, longest = 0.0;
     long slices = 0;
@@ -119,21 +124,14 @@ int run_slices(int argc, char** argv) {
     ++st.slices;
   };
   const auto t0 = std::chrono::steady_clock::now();
-  SceneLoad load(read_scene_file(path), path);
+  ScenePipeline pipe(path);  // no renderer: it reads and packs
   record("parsing the XML", seconds_since(t0) * 1e3);
-  for (bool done = false; !done;) {
-    const std::string stage = load.stage();
+  while (pipe.preparing()) {
+    const std::string stage = pipe.stage();
+    const bool sliced = pipe.sliced();
     const auto t = std::chrono::steady_clock::now();
-    done = load.run(units);
-    record(stage, seconds_since(t) * 1e3);
-  }
-  const Scene scene = load.take();
-  PackJob pack(scene);
-  for (bool done = false; !done;) {
-    const std::string stage = pack.stage();
-    const auto t = std::chrono::steady_clock::now();
-    done = pack.run(units);
-    record(stage, seconds_since(t) * 1e3);
+    pipe.step(units);
+    if (sliced) record(stage, seconds_since(t) * 1e3);
   }
   std::printf("%s in slices of %ld units:\n", path.c_str(), units);
   for (const auto& [name, st] : stages)

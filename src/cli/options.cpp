@@ -140,10 +140,11 @@ RenderSettings settings_for(const Options& o, const Scene& scene) {
   return with_scene_render(s, scene.render, user);
 }
 
-Scene load_scene(const Options& o) {
-  Scene s = load_scene_file(o.scene);
-  if (!o.env.empty()) set_env_map(s.environment, o.env);
-  return s;
+std::unique_ptr<ScenePipeline> read_scene(const Options& o) {
+  auto p = std::make_unique<ScenePipeline>(o.scene);
+  if (!o.env.empty()) p->on_read([env = o.env](Scene& s, const ScenePipeline::Times&) { set_env_map(s.environment, env); });
+  p->read();
+  return p;
 }
 
 }  // namespace pt::cli

@@ -1,8 +1,10 @@
 // Command-line options shared by `render` and `bench`.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "render/pipeline.h"
 #include "render/renderer.h"
 
 namespace pt::cli {
@@ -27,8 +29,9 @@ struct Options {
 extern const char* const kUsage;
 [[noreturn]] void usage_error(const std::string& msg);
 Options parse_options(int argc, char** argv, bool bench);
-// The scene file with the options that change it applied (--env). Throws on bad input.
-Scene load_scene(const Options& o);
+// The scene file read through the pipeline (render/pipeline.h; its meshes too: no GL is
+// needed yet) with the options that change it applied (--env). Throws on bad input.
+std::unique_ptr<ScenePipeline> read_scene(const Options& o);
 // The settings to render `scene` with: the options, and the scene's <Render> for what no
 // flag set (sample_limit: --spp, else the scene's samples when > 0, else the default).
 RenderSettings settings_for(const Options& o, const Scene& scene);

@@ -19,7 +19,7 @@
 #include "gpu/gl.h"
 #include "platform/egl.h"
 #include "render/pacing.h"
-#include "scene/xml_loader.h"
+#include "render/pipeline.h"
 
 namespace pt::cli {
 namespace {
@@ -95,14 +95,15 @@ int run_watch(const Options& o) {
       const Stamps now = stamps_of(watched);
       if (now != seen) {
         try {
-          const Scene scene = load_scene(o);
-          RenderSettings wanted = settings_for(o, scene);  // an edit of <Render> applies
+          const std::unique_ptr<ScenePipeline> pipe = read_scene(o);
+          RenderSettings wanted = settings_for(o, pipe->scene());  // an edit of <Render> applies
           wanted.spp_per_pass = settings.spp_per_pass;        // the pacer's draw size stays
           wanted.band_rows = settings.band_rows;
           settings = wanted;
           r.set_settings(settings);
-          r.set_scene(scene);  // throws (and changes nothing) if the program does not build
-          watched = scene.files;
+          pipe->attach(r);
+          pipe->finish();  // throws (and changes nothing) if the program does not build
+          watched = pipe->scene().files;
           have_scene = true;
           ++generation;
           next_write_at = 1;

@@ -1,44 +1,67 @@
-// Draw pacing: keep every draw under a target time, long enough to amortise its fixed
-// cost, short enough that no GPU watchdog fires and a page stays responsive. The cost of
-// one sample of one image row varies across the image (sky rows are cheap, rows of glass
-// are not), so the pacer keeps the worst recent cost per row-sample and sizes the next
-// draw by prediction: whole sweeps with several samples when they fit, else one sample in
-// bands of rows.
+// Draw pacing, the one place that sizes draws: keep every draw under a target time, long
+// enough to amortise its fixed cost, short enough that no GPU watchdog fires and a page
+// stays responsive. A draw is a tile of a sweep (Renderer::step): spp_per_pass samples
+// over band_rows rows (a band) and, in a thin band, band_columns columns. Two clocks
+// feed it, one pacer each, sharing the draw's vocabulary and its floor:
+// - DrawPacer (the command line): each draw is waited for (glFinish) and timed, so its
+//   cost per row-sample is known, and the next draw is sized by prediction;
+// - FramePacer (the page): WebGL calls only queue commands, so only the interval between
+//   displayed frames says how long the GPU took; the draw grows and shrinks with it.
 #pragma once
-#include <algorithm>
 
 #include "render/renderer.h"
 
 namespace pt {
 
+// Bands keep at least this many rows: SwiftShader hands pairs of pixel rows to its
+// threads in turn, so a thinner draw leaves one of two cores idle.
+inline constexpr int kMinBandRows = 4;
+
+// The cost of one sample of one image row varies across the image (sky rows are cheap,
+// rows of glass are not), so the pacer keeps the worst recent cost per row-sample and
+// sizes the next draw by prediction: whole sweeps with several samples when they fit,
+// else one sample in bands of rows.
 class DrawPacer {
  public:
   explicit DrawPacer(double target_ms) : target_ms_(target_ms) {}
-
   // The last draw took `ms` for `rows` rows at `spp` samples per pixel.
-  void record(double ms, int rows, int spp) {
-    const double cost = ms / double(std::max(1, rows) * std::max(1, spp));
-    cost_ = std::max(cost, cost_ * 0.9);  // the worst recent cost, slowly forgotten
-  }
-
+  void record(double ms, int rows, int spp);
   // Sets spp_per_pass and band_rows for the next draws (spp applies from the next sweep).
-  void apply(int image_rows, RenderSettings& s) const {
-    constexpr int kMinRows = 4, kMaxSpp = 256;
-    if (cost_ <= 0.0) return;  // nothing measured yet: keep what the caller chose
-    const double budget = target_ms_ / cost_;  // row-samples per draw
-    if (budget >= 2.0 * image_rows) {
-      s.spp_per_pass = std::clamp(int(budget / image_rows), 1, kMaxSpp);
-      s.band_rows = 0;
-    } else {
-      s.spp_per_pass = 1;
-      const int rows = std::clamp(int(budget), std::min(kMinRows, image_rows), image_rows);
-      s.band_rows = rows >= image_rows ? 0 : rows;
-    }
-  }
+  void apply(int image_rows, RenderSettings& s) const;
 
  private:
   double target_ms_;
   double cost_ = 0.0;  // ms per row-sample
+};
+
+// The interval between frames is the feedback: once the GPU falls behind, the browser
+// delays the next animation frame until the queued work is done. Draws per frame grow
+// while frames are fast and scale down when one is slow; when even one draw per frame
+// keeps frames slow, the draw itself shrinks (rows, then columns), and it grows back while
+// frames are fast. Rules and figures in pacing.cpp.
+class FramePacer {
+ public:
+  // Rows of the first draws, before any frame was measured: the first frame of a heavy
+  // scene stays short.
+  static constexpr int kFirstBandRows = 32;
+  // One displayed frame's draws of `r`: dt_ms is the interval since the last frame (0 for
+  // the first), now_ms a monotonic clock; `busy`: a scene is being prepared (one draw per
+  // frame, and frames slowed by the preparation say nothing of the draws). Sets the draw
+  // size in `s` (band_rows, band_columns; the caller hands `s` to the renderer), adds each
+  // draw's samples to `samples`, in fractions of the image, and returns the draws made.
+  int frame(Renderer& r, RenderSettings& s, double dt_ms, double now_ms, bool busy, double& samples);
+  int passes_per_frame() const { return passes_per_frame_; }
+
+ private:
+  int min_band_columns(int w, int h) const;
+  void scale_draw(double factor, int w, int h, RenderSettings& s);
+  bool judge_shrink(double pixels, double ms, double now_ms, int w, int h, RenderSettings& s);
+
+  int passes_per_frame_ = 1;
+  int draw_settle_ = 0;      // frames before the draw size may change again
+  double prev_dt_ms_ = 0.0;  // the interval before the last one
+  double shrink_from_pixels_ = 0.0, shrink_from_ms_ = 0.0;  // the last shrink: draw size and frame time before it
+  double floor_pixels_ = 0.0, floor_set_ms_ = -1e9;  // no shrink below this, for a while (judge_shrink)
 };
 
 }  // namespace pt

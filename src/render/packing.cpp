@@ -95,9 +95,18 @@ void mesh_triangle(const Scene& scene, const Shape& s, size_t tri, glm::vec3 out
   for (int k = 0; k < 3; ++k) out[k] = glm::vec3(s.transform * glm::vec4(m.positions[t[k]], 1.0f));
 }
 
+std::vector<int> light_shapes(const Scene& scene) {
+  std::vector<int> out;
+  for (size_t i = 0; i < scene.shapes.size(); ++i)
+    if (is_sampled_light(scene, scene.shapes[i])) out.push_back(int(i));
+  return out;
+}
+
 PackJob::PackJob(const Scene& scene) : scene_(scene), vertex_base_(scene.shapes.size(), -1), world_(scene.shapes.size()) {
   pack_shapes(scene, p_);
   pack_materials(scene, p_);
+  p_.light_shape = light_shapes(scene);
+  p_.shape_prim.assign(scene.shapes.size(), -1);
   p_.motion_bound = std::max(1.0f, scene.camera.shutter);
   size_t prims = 0;
   for (const Shape& s : scene.shapes) {
@@ -166,6 +175,7 @@ bool PackJob::run(long work) {
         builder_.reset();
         p_.bvh_depth = bvh_.depth;
         p_.prims.reserve(p_.unbounded + int(refs_.size()));
+        p_.prim_leaf.assign(size_t(p_.unbounded) + refs_.size(), -1);
         at_ = 0;
         stage_ = Stage::Prims;
         break;
@@ -174,6 +184,7 @@ bool PackJob::run(long work) {
         prims_step(work);
         if (at_ < bvh_.order.size()) break;
         p_.nodes.reserve(int(bvh_.nodes.size()));
+        p_.node_parent.assign(bvh_.nodes.size(), -1);
         at_ = 0;
         stage_ = Stage::Nodes;
         break;
@@ -198,6 +209,7 @@ void PackJob::boxes_step(long& work) {
       ++box_done_;
       switch (info(s.kind).bvh) {
         case BvhRole::Unbounded: {
+          p_.shape_prim[shape_] = p_.prims.count();
           pack_analytic_prim(p_, s, i);
           ++p_.unbounded;
           break;
@@ -278,6 +290,7 @@ void PackJob::prims_step(long& work) {
   for (const size_t end = at_ + size_t(std::min<long>(long(bvh_.order.size() - at_), work)); at_ < end; ++at_, --work) {
     const PrimRef& ref = refs_[size_t(bvh_.order[at_])];
     const Shape& s = scene_.shapes[size_t(ref.shape)];
+    if (s.kind != ShapeKind::Mesh) p_.shape_prim[size_t(ref.shape)] = p_.prims.count();  // analytic, or a lone triangle
     if (ref.tri < 0) {
       pack_analytic_prim(p_, s, ref.shape);
       continue;
@@ -301,10 +314,15 @@ void PackJob::nodes_step(long& work) {
   for (const size_t end = at_ + size_t(std::min<long>(long(bvh_.nodes.size() - at_), work)); at_ < end; ++at_, --work) {
     const BvhNode& n = bvh_.nodes[at_];
     const int k = p_.nodes.add();
+    const int first = n.count > 0 ? n.first + p_.unbounded : n.first;
     p_.nodes.set(k, node_rec::lo, n.box.lo);
     p_.nodes.set(k, node_rec::hi, n.box.hi);
-    p_.nodes.set(k, node_rec::first, n.count > 0 ? n.first + p_.unbounded : n.first);
+    p_.nodes.set(k, node_rec::first, first);
     p_.nodes.set(k, node_rec::count, n.count);
+    if (n.count > 0)
+      for (int q = first; q < first + n.count; ++q) p_.prim_leaf[size_t(q)] = k;
+    else
+      p_.node_parent[size_t(first)] = p_.node_parent[size_t(first) + 1] = k;
   }
 }
 
@@ -317,24 +335,7 @@ bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>
   const Shape& s = scene.shapes[size_t(shape)];
   const BvhRole role = info(s.kind).bvh;
   if (s.kind == ShapeKind::Mesh || role == BvhRole::None) return false;
-  if (p.shape_prim.empty()) {  // the first refit: who is whose, once
-    // Analytic shapes' primitives are tagged -1 - shape, a lone triangle's `shape`.
-    p.shape_prim.assign(scene.shapes.size(), -1);
-    for (int q = 0; q < p.prims.count(); ++q) {
-      const int tag = int(p.prims.get(q, prim_rec::tag));
-      const int owner = tag < 0 ? -1 - tag : tag;
-      if (tag < 0 || scene.shapes[size_t(owner)].kind != ShapeKind::Mesh) p.shape_prim[size_t(owner)] = q;
-    }
-    p.node_parent.assign(size_t(p.nodes.count()), -1);
-    p.prim_leaf.assign(size_t(p.prims.count()), -1);
-    for (int n = 0; n < p.nodes.count(); ++n) {
-      const int first = int(p.nodes.get(n, node_rec::first)), count = int(p.nodes.get(n, node_rec::count));
-      if (count > 0)
-        for (int q = first; q < first + count; ++q) p.prim_leaf[size_t(q)] = n;
-      else
-        p.node_parent[size_t(first)] = p.node_parent[size_t(first) + 1] = n;
-    }
-  }
+  if (p.shape_prim.size() != scene.shapes.size()) return false;  // not a pack_scene of this scene's shapes
   const int k = p.shape_prim[size_t(shape)];
   const glm::vec3 v[3] = {s.a, s.b, s.c};
   if (role == BvhRole::Triangles && (k < 0) != degenerate(v)) return false;  // it enters or leaves the BVH

@@ -20,8 +20,12 @@ struct PackedScene {
   int bvh_depth = 0;
   float motion_bound = 0.0f;  // moving spheres are bounded over times [0, motion_bound]
   double bvh_build_ms = 0.0;
-  // For refit_shape, made on its first call: each node's parent (-1: the root), each
-  // primitive's leaf (-1: unbounded) and each analytic shape's primitive (-1: none).
+  // Who is whose, as integers from the packing itself (never read back from the float
+  // records): each light record's shape (Renderer::update_values compares them); for
+  // refit_shape, each BVH node's parent (-1: the root), each primitive's leaf (-1:
+  // unbounded) and each analytic shape's or lone triangle's primitive (-1: none). A
+  // PackedScene of pack_values has none of them.
+  std::vector<int> light_shape;
   std::vector<int> node_parent, prim_leaf, shape_prim;
 };
 
@@ -39,6 +43,10 @@ PackedScene pack_scene(const Scene& scene);  // runs a PackJob to completion
 // The shape, material and light records are not touched: Renderer::update_geometry packs
 // those from the scene (update_values), so they go stale in `p`.
 bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>& prims, std::vector<int>& nodes);
+
+// The shape of each light record, in record order: the emitters that pack_shapes makes
+// lights of (sampled by next-event estimation).
+std::vector<int> light_shapes(const Scene& scene);
 
 // Only the shape, material and light records (no BVH, primitives or vertices): what an
 // edit of values - materials, emission - changes (Renderer::update_values).

@@ -1,18 +1,19 @@
-// The progressive integrator: ping-pong accumulation of the running mean of radiance in
-// float textures, one pass = u_spp samples per pixel. Display applies the tone map.
+// The progressive integrator, a facade over its parts side by side in render/: the program
+// cache (one integrator program per feature set), the scene's textures, the accumulator
+// (ping-pong running mean, sweeps in bands and tiles) and the display (tone maps). One
+// draw = u_spp samples per pixel of a tile. What gets a scene here: render/pipeline.h.
 #pragma once
 #include <cstdint>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
-#include "gpu/program.h"
-#include "gpu/texture.h"
-#include "gpu/texture_array.h"
 #include "core/render_mode.h"
-#include "render/sh.h"
 #include "core/tonemap.h"
+#include "render/accumulator.h"
+#include "render/display.h"
+#include "render/program_cache.h"
+#include "render/scene_textures.h"
 #include "scene/scene.h"
 #include "shadergen/shadergen.h"
 
@@ -69,11 +70,7 @@ class Renderer {
   void set_camera(const Camera& camera);
   void set_settings(const RenderSettings& s);
   void resize(int width, int height);
-  void restart() {
-    samples_ = 0;
-    next_row_ = next_column_ = 0;
-    needs_clear_ = true;
-  }
+  void restart() { accum_.restart(); }
 
   // One draw: the next tile of the current sweep, unless the sample limit is reached. A
   // sweep is bands of band_rows rows, bottom to top (the whole image when 0); a band is
@@ -84,7 +81,7 @@ class Renderer {
   // else 0. Tiles keep each draw short (no watchdog, a responsive page); the estimate is
   // the same.
   int step();
-  bool mid_sweep() const { return next_row_ != 0 || next_column_ != 0; }
+  bool mid_sweep() const { return accum_.mid_sweep(); }
   // The pixel samples the last step() drew: its pixels times the sweep's samples per
   // pixel (0 when it drew nothing).
   long last_draw_samples() const { return last_draw_samples_; }
@@ -99,13 +96,13 @@ class Renderer {
   // Tone-mapped image into the bound draw framebuffer at viewport (x, y, w, h) = size().
   void display(int x, int y) const;
 
-  int samples() const { return samples_; }
-  bool converged() const { return settings_.sample_limit > 0 && samples_ >= settings_.sample_limit; }
-  int width() const { return width_; }
-  int height() const { return height_; }
+  int samples() const { return accum_.samples(); }
+  bool converged() const { return settings_.sample_limit > 0 && samples() >= settings_.sample_limit; }
+  int width() const { return accum_.width(); }
+  int height() const { return accum_.height(); }
   const RenderSettings& settings() const { return settings_; }
   const Camera& camera() const { return camera_; }
-  GLenum accum_format() const { return accum_format_; }
+  GLenum accum_format() const { return accum_.format(); }
   // A GL ES 3.1+ context (natively; never WebGL 2) with float images: settings.compute
   // then runs the integrator as a compute kernel over 8x8 pixel groups instead of a
   // fragment pass. Same code, same estimate (tests/compute_kernel_test.cpp).
@@ -113,7 +110,7 @@ class Renderer {
   bool using_compute() const { return settings_.compute && compute_supported_; }
   const ShaderSource& integrator_source() const { return *source_; }
   double compile_ms() const { return integrator_ ? integrator_->compile_ms() : 0.0; }
-  size_t programs_compiled() const { return cache_.size(); }
+  size_t programs_compiled() const { return programs_.size(); }
   // The acceleration structure of the current scene.
   struct BvhStats {
     int primitives = 0, nodes = 0, depth = 0;
@@ -129,63 +126,27 @@ class Renderer {
   std::vector<float> read_radiance() const;
   // Tone-mapped 8-bit RGBA, rows bottom to top.
   std::vector<uint8_t> read_display() const;
-  // Totals since the last restart, counted in the shader.
-  struct Counters {
-    double bad_samples = 0;  // NaN/Inf samples (dropped from the estimate)
-    double rays = 0;         // every ray cast: camera, bounce and shadow
-  };
-  Counters counters() const;
+  using Counters = RenderCounters;  // totals since the last restart, counted in the shader
+  Counters counters() const { return accum_.counters(); }
 
  private:
-  struct CachedProgram {
-    ShaderSource source;
-    Program program;
-  };
-  bool program_ready_for(const Features& f);
+  Features features_for(const Scene& scene, RenderMode mode) const;
   void select_program();  // the cached (or newly built) program for features_ + settings_.mode
-  void update_sh();       // the environment's SH coefficients, when the mode needs them
-  void set_environment(const Environment& env);  // its textures (a new map only) and uniforms
+  GlLimits limits_;       // first: the constructor checks them before building anything
+  GLuint vao_ = 0;        // the fullscreen triangle's (no attributes)
+  Display display_;
+  Accumulator accum_;
+  SceneTextures scene_;
+  ProgramCache programs_;
   Features features_;
   bool have_scene_ = false;
-  Environment env_;       // as last set (for the SH projection)
-  ShCoeffs sh_{};
-  bool sh_valid_ = false;
   Program* integrator_ = nullptr;
   const ShaderSource* source_ = nullptr;
-  std::unordered_map<uint64_t, std::unique_ptr<CachedProgram>> cache_;
-  mutable Program display_[kNumToneMaps];  // built on first use, one per tone map
-  Texture shape_tex_, material_tex_, light_tex_;
-  Texture node_tex_, prim_tex_, vertex_tex_;  // the BVH, its primitives, mesh vertex attributes
-  Texture env_tex_, env_cdf_tex_;  // when the scene has an environment map
-  glm::ivec2 env_size_{0};
-  float env_rotation_ = 0.0f, env_intensity_ = 1.0f, env_integral_ = 0.0f;
-  std::shared_ptr<const EnvImage> env_source_;  // the image the textures hold
-  TextureArray maps_;  // Textured scenes: the image maps (render/image_maps.h)
-  Texture uv_tex_;     // and the Triangle uv records
-  Texture accum_[2];
-  Texture stats_[2];
-  Framebuffer fbo_[2];
-  GLenum accum_format_ = GL_RGBA32F;
   bool compute_supported_ = false;
-  GLuint vao_ = 0;
-  int cur_ = 0;
-  int samples_ = 0;
-  int next_row_ = 0;      // first row of the band in progress or the next one; with
-  int next_column_ = 0;   // this 0 too, a new sweep starts; else the band's next tile
-  int band_end_ = 0;      // the row after the band in progress (fixed while it lasts)
   long last_draw_samples_ = 0;
-  int sweep_spp_ = 1;     // samples per pixel of the sweep in progress
-  bool needs_clear_ = true;
-  int width_ = 0, height_ = 0;
-  int num_lights_ = 0, num_unbounded_ = 0, num_nodes_ = 0, num_shapes_ = 0, num_prims_ = 0;
-  std::vector<int> light_shapes_;  // the shape of each light record (update_values keeps them)
-  float motion_bound_ = 1.0f;
   BvhStats bvh_stats_;
-  bool dot_weight_ = true;
-  glm::vec3 env_color_{0.5f};
   Camera camera_;
   RenderSettings settings_;
-  GlLimits limits_;
 };
 
 }  // namespace pt

@@ -1,0 +1,177 @@
+// The App's main panel (scene, settings, the light, environment, lens, progress, saving)
+// and the camera controls (keys, mouse look, wheel): what a frame reads from the user
+// before it draws.
+#include <algorithm>
+#include <cmath>
+
+#include <GLFW/glfw3.h>  // key codes only: the ImGui GLFW backend indexes io.KeysDown by them
+#include <imgui.h>
+
+#include "app/app.h"
+#include "core/image.h"
+#include "render/camera.h"
+
+namespace pt {
+namespace {
+
+constexpr float kLookDegPerPixel = 0.2f;
+constexpr double kSettleMs = 200.0;  // the camera counts as moving until this long after its last change
+constexpr float kTurnDegPerSecond = 90.0f;
+
+}  // namespace
+
+void App::handle_input(double dt_s) {
+  const ImGuiIO& io = ImGui::GetIO();
+  Camera c = renderer_->camera();
+  const glm::vec3 forward = camera_forward(c);
+  const glm::vec3 up = glm::normalize(c.up);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, up));
+  // Scene units differ by orders of magnitude between scenes: move at 1% of the distance
+  // to the origin per 60 Hz frame, at least one unit.
+  const float step = std::max(1.0f, 0.01f * glm::length(c.position));
+  const float move = step * 60.0f * float(dt_s);
+  bool changed = false;
+
+  // Keys only while the canvas has focus and no modifier is held: Ctrl+W, Alt+Left and
+  // friends stay the browser's.
+  if (!io.WantCaptureKeyboard && keys_enabled_ && !io.KeyCtrl && !io.KeyAlt && !io.KeySuper && !io.KeyShift) {
+    const auto down = [&](int key) { return io.KeysDown[key]; };
+    glm::vec3 d(0.0f);
+    if (down(GLFW_KEY_W)) d += up;
+    if (down(GLFW_KEY_S)) d -= up;
+    if (down(GLFW_KEY_D)) d += right;
+    if (down(GLFW_KEY_A)) d -= right;
+    if (down(GLFW_KEY_Q)) d += forward;
+    if (down(GLFW_KEY_E)) d -= forward;
+    if (d != glm::vec3(0.0f)) {
+      c.position += d * move;
+      changed = true;
+    }
+    const float turn = kTurnDegPerSecond * float(dt_s);
+    const float yaw = float(down(GLFW_KEY_RIGHT) - down(GLFW_KEY_LEFT));
+    const float pitch = float(down(GLFW_KEY_UP) - down(GLFW_KEY_DOWN));
+    if (yaw != 0.0f || pitch != 0.0f) {
+      c.yaw += yaw * turn;
+      c.pitch += pitch * turn;
+      changed = true;
+    }
+  }
+
+  // A drag looks around only if it started on the image, not on a panel, and only from
+  // the frame after the press: the move that brought the pointer there is not a drag
+  // (a click that picks an object leaves the view alone).
+  const bool was_dragging = dragging_;
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse) dragging_ = true;
+  if (!io.MouseDown[ImGuiMouseButton_Left]) dragging_ = false;
+  if (was_dragging && dragging_ && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    c.yaw += io.MouseDelta.x * kLookDegPerPixel;
+    c.pitch -= io.MouseDelta.y * kLookDegPerPixel;
+    changed = true;
+  }
+  if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) {
+    c.position += forward * (io.MouseWheel * 5.0f * step);
+    changed = true;
+  }
+
+  if (changed) {
+    c.pitch = std::clamp(c.pitch, -89.0f, 89.0f);
+    c.yaw = std::fmod(c.yaw + 360.0f, 360.0f);
+    renderer_->set_camera(c);
+    moving_until_ms_ = last_frame_ms_ + kSettleMs;
+  }
+}
+
+// Values of the scene: editing them re-packs its data and restarts, never recompiles
+// (the program depends only on the kinds present). Ranges follow the seed's sliders.
+void App::draw_scene_controls() {
+  bool edited = false, moved = false;
+  if (!scene_.lights.empty() && ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) {
+    Light& l = scene_.lights[0];
+    moved = ImGui::SliderFloat3("position", &l.position.x, -300.0f, 300.0f);
+    bool changed = ImGui::ColorEdit3("colour", &l.color.x);
+    changed |= ImGui::SliderFloat("intensity", &l.intensity, 0.0f, 300.0f);
+    if (changed || moved) {
+      sync_light(scene_, 0);
+      edited = true;
+    }
+  }
+  edited |= env_panel_.draw(scene_.environment);
+  Camera cam = renderer_->camera();
+  if (ImGui::CollapsingHeader("Lens and shutter")) {
+    const float scale = std::max(1.0f, glm::length(cam.position));  // drag speeds follow the scene's size
+    bool changed = ImGui::DragFloat("aperture", &cam.aperture, 0.001f * scale, 0.0f, scale, "%.3f");
+    changed |= ImGui::DragFloat("focal distance", &cam.focal_distance, 0.005f * scale, 0.001f * scale, 100.0f * scale, "%.2f");
+    changed |= ImGui::SliderFloat("shutter", &cam.shutter, 0.0f, 1.0f);
+    if (changed) renderer_->set_camera(cam);
+  }
+  if (edited) scene_edited(moved ? scene_.lights[0].shape : -1);
+}
+
+void App::draw_panel() {
+  const std::string& root = options_.scene_root;
+  const auto label = [&](const std::string& path) {
+    return path.rfind(root + "/", 0) == 0 ? path.substr(root.size() + 1) : path;
+  };
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Path tracer", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  // Long texts (errors, the GPU's name) wrap instead of widening the auto-sized panel.
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
+  ImGui::PushItemWidth(ImGui::GetFontSize() * 14.0f);
+
+  if (ImGui::BeginCombo("scene", label(scene_.path).c_str())) {
+    for (const std::string& f : scene_files_) {
+      const bool selected = f == scene_.path;
+      if (ImGui::Selectable(label(f).c_str(), selected)) {
+        if (options_.request_scene) options_.request_scene(f);
+        else load_scene(f);
+      }
+      if (selected) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  if (error_) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextUnformatted(error_->c_str());
+    ImGui::PopStyleColor();
+  }
+
+  ImGui::SliderInt("bounces", &settings_.max_bounces, 1, 16);
+  if (ImGui::InputInt("sample limit", &settings_.sample_limit, 16, 256)) settings_.sample_limit = std::max(0, settings_.sample_limit);
+  int tonemap = int(settings_.tonemap);
+  if (ImGui::Combo("tone map", &tonemap, kToneMapNames, kNumToneMaps)) settings_.tonemap = ToneMap(tonemap);
+  if (ImGui::SliderFloat("exposure", &settings_.exposure, 0.001f, 16.0f, "%.3f", ImGuiSliderFlags_Logarithmic))
+    auto_exposure_ = false;
+  ImGui::SameLine();
+  if (ImGui::Checkbox("auto", &auto_exposure_) && auto_exposure_) next_exposure_at_ = 0;
+
+  draw_scene_controls();
+  int mode = int(settings_.mode);  // each mode is its own program, compiled on first use
+  if (ImGui::Combo("mode", &mode, kRenderModeLabels, kNumRenderModes)) settings_.mode = RenderMode(mode);
+  if (options_.save_file) {
+    // PNG: the image as displayed (tone-mapped); HDR: linear radiance.
+    const int w = renderer_->width(), h = renderer_->height();
+    if (ImGui::Button("save PNG")) options_.save_file("pathtracer.png", encode_png(w, h, renderer_->read_display()), "image/png");
+    ImGui::SameLine();
+    if (ImGui::Button("save HDR"))
+      options_.save_file("pathtracer.hdr", encode_hdr(w, h, renderer_->read_radiance()), "image/vnd.radiance");
+  }
+
+  ImGui::Separator();
+  const double end_ms = done_ms_ >= 0 ? done_ms_ : last_frame_ms_;
+  if (settings_.sample_limit > 0)
+    ImGui::Text("samples    %d / %d", renderer_->samples(), settings_.sample_limit);
+  else
+    ImGui::Text("samples    %d", renderer_->samples());
+  ImGui::Text("samples/s  %.1f", samples_per_second_);
+  ImGui::Text("elapsed    %.1f s", std::max(0.0, end_ms - restart_ms_) * 1e-3);
+  ImGui::Text("resolution %d x %d", renderer_->width(), renderer_->height());
+  draw_view_controls();
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextUnformatted(options_.gl_renderer.c_str());
+  ImGui::PopStyleColor();
+  ImGui::PopItemWidth();
+  ImGui::PopTextWrapPos();
+  ImGui::End();
+}
+
+}  // namespace pt

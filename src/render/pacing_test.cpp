@@ -1,0 +1,145 @@
+// The draw pacers (render/pacing.h). DrawPacer: nothing measured keeps the caller's size;
+// cheap rows give whole sweeps of several samples (at most 256), dear rows bands of one
+// sample (at least 4 rows); the worst recent cost is kept, slowly forgotten. FramePacer,
+// fed frame intervals: draws per frame grow while frames are fast and scale down when one
+// is slow; with one draw per frame a far too slow frame shrinks the draw at once, two slow
+// frames by 0.7, never below 4 rows x the narrowest tile, with two frames' settling
+// between changes; fast frames grow it back to the whole image; a shrink that leaves frames
+// as slow is undone and not tried again for 5 s; a preparation gets one draw per frame.
+#include <catch2/catch.hpp>
+
+#include "gl_context.h"
+#include "render/pacing.h"
+#include "scene/xml_loader.h"
+
+using namespace pt;
+
+TEST_CASE("DrawPacer sizes the next draw from the measured cost per row-sample", "[pacing]") {
+  RenderSettings s;
+  s.spp_per_pass = 3;
+  s.band_rows = 7;
+  DrawPacer p(40.0);
+  p.apply(100, s);  // nothing measured yet
+  CHECK(s.spp_per_pass == 3);
+  CHECK(s.band_rows == 7);
+  p.record(1.0, 100, 1);  // 0.01 ms per row-sample: 4000 row-samples in 40 ms
+  p.apply(100, s);
+  CHECK(s.spp_per_pass == 40);
+  CHECK(s.band_rows == 0);
+  DrawPacer cheap(40.0);
+  cheap.record(0.001, 100, 1);
+  cheap.apply(100, s);
+  CHECK(s.spp_per_pass == 256);
+  DrawPacer dear(40.0);
+  dear.record(200.0, 100, 1);  // 2 ms per row-sample: 20 rows
+  dear.apply(100, s);
+  CHECK(s.spp_per_pass == 1);
+  CHECK(s.band_rows == 20);
+  dear.record(1.0, 100, 1);  // a cheap draw after it: the dear cost fades by 0.9 a draw
+  dear.apply(100, s);
+  CHECK(s.band_rows == 22);
+  DrawPacer slowest(40.0);
+  slowest.record(1000.0, 1, 1);
+  slowest.apply(100, s);
+  CHECK(s.band_rows == 4);  // the floor
+  slowest.apply(3, s);
+  CHECK(s.band_rows == 0);  // an image thinner than the floor: whole sweeps
+}
+
+namespace {
+
+// Frames of `dt` ms each through the pacer; returns the draws of the last one.
+int frames(FramePacer& p, Renderer& r, RenderSettings& s, int n, double dt, double& now, bool busy = false) {
+  double samples = 0.0;
+  int draws = 0;
+  for (int i = 0; i < n; ++i) {
+    now += dt;
+    draws = p.frame(r, s, dt, now, busy, samples);
+  }
+  return draws;
+}
+
+}  // namespace
+
+TEST_CASE("FramePacer follows the interval between frames", "[gpu][pacing]") {
+  test_gl();
+  Renderer r;  // no scene: the draws cost nothing, so only the intervals fed here count
+  r.resize(256, 128);
+  RenderSettings s;
+  FramePacer p;
+  double now = 0.0, samples = 0.0;
+  CHECK(p.frame(r, s, 0.0, now, false, samples) == 1);
+  CHECK(frames(p, r, s, 10, 10.0, now) == 10);  // fast frames: one more draw each
+  CHECK(p.passes_per_frame() == 11);
+  frames(p, r, s, 100, 10.0, now);
+  CHECK(p.passes_per_frame() == 64);
+  CHECK(frames(p, r, s, 1, 100.0, now, true) == 1);  // preparing: one draw, nothing judged
+  CHECK(p.passes_per_frame() == 64);
+  frames(p, r, s, 1, 100.0, now);
+  CHECK(p.passes_per_frame() == 14);  // 64 x 22 / 100
+  frames(p, r, s, 2, 100.0, now);
+  CHECK(p.passes_per_frame() == 1);
+  CHECK(s.band_rows == 0);
+  frames(p, r, s, 1, 100.0, now);  // far too slow with one draw: the draw shrinks at once
+  CHECK(s.band_rows == 28);        // 0.22 of the image, whole rows
+  CHECK(s.band_columns == 0);
+  frames(p, r, s, 2, 100.0, now);  // two frames to settle
+  CHECK(s.band_rows == 28);
+  frames(p, r, s, 1, 100.0, now);
+  CHECK(s.band_rows == 6);
+  frames(p, r, s, 60, 100.0, now);
+  CHECK(s.band_rows == 4);  // the floor: 4 rows of the narrowest tile
+  CHECK(s.band_columns == 128);
+  frames(p, r, s, 60, 10.0, now);  // fast frames: back to the whole image, then more draws
+  CHECK(s.band_rows == 0);
+  CHECK(s.band_columns == 0);
+  CHECK(p.passes_per_frame() > 1);
+}
+
+TEST_CASE("FramePacer undoes a shrink that leaves frames as slow, for 5 s", "[gpu][pacing]") {
+  test_gl();
+  Renderer r;
+  r.resize(256, 128);
+  RenderSettings s;
+  FramePacer p;
+  double now = 0.0, samples = 0.0;
+  p.frame(r, s, 0.0, now, false, samples);
+  frames(p, r, s, 1, 40.0, now);
+  CHECK(s.band_rows == 0);  // one slow frame may be a hiccup
+  frames(p, r, s, 1, 40.0, now);
+  CHECK(s.band_rows == 89);  // two: the draw shrinks by 0.7
+  frames(p, r, s, 2, 40.0, now);
+  CHECK(s.band_rows == 89);  // settling
+  frames(p, r, s, 1, 40.0, now);
+  CHECK(s.band_rows == 0);  // as slow as before: the frame's fixed cost, not the draw; undone
+  const double floor_from = now;
+  while (now - floor_from < 4900.0) {
+    frames(p, r, s, 1, 40.0, now);
+    REQUIRE(s.band_rows == 0);
+  }
+  for (int waited = 0; s.band_rows == 0 && waited < 20; ++waited) frames(p, r, s, 1, 40.0, now);
+  CHECK(s.band_rows == 89);  // the floor expired: tried again
+  CHECK(now - floor_from > 5000.0);
+}
+
+TEST_CASE("FramePacer counts each draw's samples in fractions of the image", "[gpu][pacing]") {
+  test_gl();
+  Renderer r;
+  r.set_scene(load_scene_text(R"(<SceneLevel><Camera position="0 0 3" yaw="90" pitch="0"/><Objects>
+    <Sphere center="0 0 0" radius="0.5"><Diffuse/></Sphere></Objects></SceneLevel>)", "pace.xml", false));
+  r.resize(64, 32);
+  RenderSettings s = r.settings();
+  s.band_rows = 8;
+  r.set_settings(s);
+  FramePacer p;
+  double now = 0.0, samples = 0.0;
+  CHECK(p.frame(r, s, 0.0, now, false, samples) == 1);
+  CHECK(samples == 0.25);  // a band of 8 rows of 32
+  CHECK(r.samples() == 0);
+  s.sample_limit = 1;
+  r.set_settings(s);
+  for (int i = 0; i < 3; ++i) p.frame(r, s, 0.0, now, false, samples);
+  CHECK(samples == 1.0);
+  CHECK(r.converged());
+  CHECK(p.frame(r, s, 0.0, now, false, samples) == 0);  // converged: no draw
+}

@@ -1,0 +1,93 @@
+// The integer tables of a packing (PackedScene::light_shape, node_parent, prim_leaf,
+// shape_prim) come from the builder, and they say what the float records say: each light
+// record's shape, each node's parent, each primitive's leaf, each analytic shape's or lone
+// triangle's primitive. Checked against the records on the shipped scenes and on a scene
+// of every shape role (planes outside the BVH, lone triangles, one degenerate, mesh instances),
+// packed in one run and in slices.
+#include <climits>
+
+#include <catch2/catch.hpp>
+
+#include "render/packing.h"
+#include "scene/xml_loader.h"
+#include "test_paths.h"
+
+using namespace pt;
+
+namespace {
+
+const char* kRoles = R"(<SceneLevel><Camera position="0 0 3" yaw="90" pitch="0"/>
+  <Light position="1 2 2" radius="0.3" color="1 1 1" intensity="40"/><Objects>
+  <Sphere center="1.5 0 0" radius="0.4"><Diffuse/></Sphere>
+  <Plane normal="0 1 0" d="-1"><Diffuse/></Plane>
+  <Plane normal="0 0 1" d="-5"><Diffuse/></Plane>
+  <Box min="-1 -1 -1" max="-0.5 -0.5 -0.5"><Emit><Absorb intensity="3" color="1 1 1"/></Emit></Box>
+  <Triangle v0="0 0 0" v1="1 0 0" v2="0 1 0"><Emit><Absorb intensity="2" color="1 1 1"/></Emit></Triangle>
+  <Triangle v0="0 0 0" v1="1 0 0" v2="0 0 1"><Diffuse/></Triangle>
+  <Mesh generate="icosphere" level="3" position="0 0.5 0"><Diffuse/></Mesh>
+  <Mesh generate="icosphere" level="2" scale="0.3" position="-2 0 0"><Diffuse/></Mesh>
+</Objects></SceneLevel>)";
+
+void check_tables(const Scene& scene, const PackedScene& p) {
+  REQUIRE(p.light_shape.size() == size_t(p.lights.count()));
+  for (int i = 0; i < p.lights.count(); ++i) CHECK(p.light_shape[size_t(i)] == int(p.lights.get(i, light_rec::shape)));
+  CHECK(light_shapes(scene) == p.light_shape);
+
+  REQUIRE(p.node_parent.size() == size_t(p.nodes.count()));
+  REQUIRE(p.prim_leaf.size() == size_t(p.prims.count()));
+  REQUIRE(p.shape_prim.size() == scene.shapes.size());
+  std::vector<int> parent(p.node_parent.size(), -1), leaf(p.prim_leaf.size(), -1), prim(scene.shapes.size(), -1);
+  for (int n = 0; n < p.nodes.count(); ++n) {
+    const int first = int(p.nodes.get(n, node_rec::first)), count = int(p.nodes.get(n, node_rec::count));
+    if (count > 0)
+      for (int q = first; q < first + count; ++q) leaf[size_t(q)] = n;
+    else
+      parent[size_t(first)] = parent[size_t(first) + 1] = n;
+  }
+  for (int q = 0; q < p.prims.count(); ++q) {
+    const int tag = int(p.prims.get(q, prim_rec::tag));
+    const int owner = tag < 0 ? -1 - tag : tag;
+    if (tag < 0 || scene.shapes[size_t(owner)].kind != ShapeKind::Mesh) prim[size_t(owner)] = q;
+  }
+  CHECK(p.node_parent == parent);
+  CHECK(p.prim_leaf == leaf);
+  CHECK(p.shape_prim == prim);
+  for (int q = 0; q < p.unbounded; ++q) CHECK(p.prim_leaf[size_t(q)] == -1);  // planes are outside the BVH
+  if (p.nodes.count() > 0) CHECK(p.node_parent[0] == -1);
+}
+
+}  // namespace
+
+TEST_CASE("the packing's light, parent, leaf and primitive tables agree with its records", "[packing]") {
+  std::vector<Scene> scenes;
+  scenes.push_back(load_scene_text(kRoles, "roles.xml", false));
+  // The last triangle made degenerate (an edit can; the loader refuses one).
+  Scene flat = scenes.front();
+  int degenerate = -1;
+  for (size_t i = 0; i < flat.shapes.size(); ++i)
+    if (flat.shapes[i].kind == ShapeKind::Triangle) degenerate = int(i);
+  REQUIRE(degenerate >= 0);
+  flat.shapes[size_t(degenerate)].c = glm::vec3(2, 0, 0);
+  scenes.push_back(flat);
+  for (const char* f : {"scenes/reference/scene2.xml", "scenes/mesh-cube.xml", "scenes/gltf-instances.xml"})
+    scenes.push_back(load_scene_file(repo_path(f)));
+  for (const Scene& scene : scenes) {
+    INFO(scene.path);
+    const PackedScene one = pack_scene(scene);
+    check_tables(scene, one);
+    PackJob job(scene);
+    while (!job.run(5)) {
+    }
+    const PackedScene sliced = job.take();
+    CHECK(sliced.node_parent == one.node_parent);
+    CHECK(sliced.prim_leaf == one.prim_leaf);
+    CHECK(sliced.shape_prim == one.shape_prim);
+    CHECK(sliced.light_shape == one.light_shape);
+  }
+  const PackedScene p = pack_scene(scenes.front());
+  CHECK(p.unbounded == 2);
+  CHECK(p.light_shape.size() == 3);  // the light's sphere, the emitting box and triangle
+  CHECK(p.shape_prim[size_t(degenerate)] >= 0);
+  const PackedScene q = pack_scene(flat);
+  CHECK(q.shape_prim[size_t(degenerate)] == -1);  // not in the BVH: nothing to draw
+}
