@@ -1,7 +1,8 @@
-// The XML document walk (scene/xml_walk.h): <SceneLevel> and its elements, the shapes,
-// and the materials: <Attenuate> and <Emit> around a material are the walk's own; every
-// other element is a material kind that parses itself (materials/<kind>.h), found through
-// the list of kinds. Strict: unknown elements and attributes are errors with their line.
+// The XML document walk (scene/xml_walk.h): <SceneLevel> and its elements, the shapes
+// (each a shape kind that parses itself, shapes/<kind>.h, found through the list of
+// kinds; <Mesh> reads files: xml_meshes.cpp), and the materials: <Attenuate> and <Emit>
+// around a material are the walk's own; every other element is a material kind that
+// parses itself (materials/<kind>.h), found through the list of kinds. Strict: unknown elements and attributes are errors with their line.
 #include <cmath>
 #include <cstring>
 
