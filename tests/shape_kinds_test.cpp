@@ -122,7 +122,7 @@ TEST_CASE("every shape kind's CPU twin agrees with its GLSL on random and grazin
   }
 }
 
-TEST_CASE("every shape kind's bounds hold its hits; a moving sphere's over the shutter", "[shapes]") {
+TEST_CASE("every shape kind's bounds hold its hits, and a moving sphere's its hits over the shutter", "[shapes]") {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (int kind = 0; kind < kNumShapeKinds; ++kind) {
