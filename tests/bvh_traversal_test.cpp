@@ -29,20 +29,13 @@ Scene mixed_scene(std::vector<glm::vec3>* grid_vertices, int* grid_n) {
     add_box(s, c - e, c + e, m);
   }
   for (int i = 0; i < 60; ++i) {
-    Shape t;
-    t.kind = ShapeKind::Triangle;
-    t.a = glm::vec3(u(rng), u(rng), u(rng));
-    t.b = t.a + glm::vec3(r(rng), u(rng) * 0.3f, r(rng));
-    t.c = t.a + glm::vec3(-r(rng), r(rng), u(rng) * 0.3f);
-    t.material = m;
-    s.shapes.push_back(t);
+    Triangle t;
+    t.v0 = glm::vec3(u(rng), u(rng), u(rng));
+    t.v1 = t.v0 + glm::vec3(r(rng), u(rng) * 0.3f, r(rng));
+    t.v2 = t.v0 + glm::vec3(-r(rng), r(rng), u(rng) * 0.3f);
+    s.shapes.push_back(Shape(t, m));
   }
-  Shape plane;
-  plane.kind = ShapeKind::Plane;
-  plane.a = glm::vec3(0.0f, 1.0f, 0.0f);
-  plane.radius = -11.0f;
-  plane.material = m;
-  s.shapes.push_back(plane);
+  s.shapes.push_back(Shape(Plane{.normal = glm::vec3(0.0f, 1.0f, 0.0f), .d = -11.0f}, m));
   // A 10 x 10 creased grid (200 triangles), placed by a transform.
   const int N = 10;
   auto mesh = std::make_shared<MeshData>();
@@ -55,13 +48,9 @@ Scene mixed_scene(std::vector<glm::vec3>* grid_vertices, int* grid_n) {
       mesh->triangles.emplace_back(a, d, c);
     }
   s.meshes.push_back(mesh);
-  Shape inst;
-  inst.kind = ShapeKind::Mesh;
-  inst.mesh = 0;
-  inst.transform = glm::mat4(1.0f);
+  Mesh inst{.mesh = 0, .transform = glm::mat4(1.0f)};
   inst.transform[3] = glm::vec4(-5.0f, -5.0f, -2.0f, 1.0f);
-  inst.material = m;
-  s.shapes.push_back(inst);
+  s.shapes.push_back(Shape(inst, m));
   if (grid_vertices) {
     for (glm::vec3 p : mesh->positions) grid_vertices->push_back(p + glm::vec3(-5.0f, -5.0f, -2.0f));
     *grid_n = N;

@@ -72,7 +72,7 @@ TEST_CASE("motion blur: a moving sphere light over a plane gives the time-averag
   const glm::vec3 start(-0.6f, 2.0f, -0.2f), velocity(1.5f, 0.3f, 0.2f);
   Scene s = sphere_light_over_plane(start, radius, L);
   s.camera.shutter = shutter;
-  s.shapes.back().velocity = velocity;
+  s.shapes.back().as<Sphere>()->velocity = velocity;
   RenderSettings st;
   st.max_bounces = 1;
   const int W = 40;

@@ -138,14 +138,10 @@ namespace {
 Scene transformed(Scene s, float scale, glm::vec3 offset) {
   auto pt = [&](glm::vec3 p) { return p * scale + offset; };
   for (Shape& sh : s.shapes) {
-    switch (sh.kind) {
-      case ShapeKind::Plane: sh.radius = sh.radius * scale + glm::dot(sh.a, offset); break;
-      default:
-        sh.a = pt(sh.a);
-        sh.b = pt(sh.b);
-        sh.c = pt(sh.c);
-        sh.radius *= scale;
-    }
+    if (Plane* p = sh.as<Plane>()) p->d = p->d * scale + glm::dot(p->normal, offset);
+    if (Sphere* p = sh.as<Sphere>()) p->center = pt(p->center), p->radius *= scale;
+    if (Box* p = sh.as<Box>()) p->min = pt(p->min), p->max = pt(p->max);
+    if (Triangle* p = sh.as<Triangle>()) p->v0 = pt(p->v0), p->v1 = pt(p->v1), p->v2 = pt(p->v2);
   }
   for (Light& l : s.lights) {
     l.position = pt(l.position);

@@ -54,11 +54,7 @@ Scene quad(glm::vec3 n, const std::string& obj_normal = "") {
     mesh = std::make_shared<MeshData>(parse_mesh_obj(text, "grid.obj"));
   }
   s.meshes.push_back(mesh);
-  Shape sh;
-  sh.kind = ShapeKind::Mesh;
-  sh.mesh = 0;
-  sh.material = m;
-  s.shapes.push_back(sh);
+  s.shapes.push_back(Shape(Mesh{.mesh = 0}, m));
   return s;
 }
 

@@ -126,12 +126,7 @@ TEST_CASE("Whitted: the lit plane seen in a mirror, and nothing beyond the bounc
   const Analytic a{glm::vec3(0.3f, 2.0f, -0.2f), 0.5f, 10.0f, true, -3.0f};
   Scene s = sphere_light_over_plane(a.center, a.radius, a.L);
   const Material mirror = Reflect{};
-  Shape m;
-  m.kind = ShapeKind::Plane;
-  m.a = glm::vec3(0, 0, 1);
-  m.radius = a.mirror_z;  // dot(n, p) = d
-  m.material = add_material(s, mirror);
-  s.shapes.push_back(m);
+  s.shapes.push_back(Shape(Plane{.normal = glm::vec3(0, 0, 1), .d = a.mirror_z}, add_material(s, mirror)));  // dot(n, p) = d
   int used = 0, mirrored = 0;
   check_against("Whitted: plane and its mirror image, 2 bounces", s, a, whitted(2), 256, &used, &mirrored);
   CHECK(mirrored > used / 8);  // a good part of the view is the mirror image
@@ -197,11 +192,7 @@ TEST_CASE("SH mode: a white diffuse plane under a constant environment has the e
   s.environment.color = glm::vec3(0.3f, 0.6f, 1.5f);
   Material white, grey;
   grey.tint = glm::vec3(0.25f, 0.5f, 1.0f);
-  Shape plane;
-  plane.kind = ShapeKind::Plane;
-  plane.a = glm::vec3(0, 1, 0);
-  plane.material = add_material(s, white);
-  s.shapes.push_back(plane);
+  s.shapes.push_back(Shape(Plane{.normal = glm::vec3(0, 1, 0), .d = 0.0f}, add_material(s, white)));
   RenderSettings st;
   st.mode = RenderMode::SphericalHarmonics;
   for (int pass = 0; pass < 2; ++pass) {

@@ -58,8 +58,8 @@ TEST_CASE("pick: known pixels of reference scene0", "[picking]") {
     const glm::vec3 centre = shape_position(sh);
     const Ray to = {s.camera.position, glm::normalize(centre - s.camera.position)};
     Hit own;
-    if (sh.kind == ShapeKind::Sphere) intersect_sphere(sh, i, to, own);
-    else intersect_box(sh, i, to, prepare_box(to), own);
+    if (const Sphere* sp = sh.as<Sphere>()) intersect_sphere(*sp, i, to, own);
+    else intersect_box(*sh.as<Box>(), i, to, prepare_box(to), own);
     REQUIRE(own.id == i);
     const glm::vec2 px = project(s.camera, centre, size);
     if (px.x < 0 || px.y < 0 || px.x >= size.x || px.y >= size.y) continue;
@@ -170,8 +170,8 @@ TEST_CASE("selection edits re-upload the scene and never recompile", "[gpu][pick
   set_sphere_radius(s, light_shape, 12.0f);
   CHECK(s.lights[0].position == glm::vec3(0.0f, 120.0f, 0.0f));
   CHECK(s.lights[0].radius == 12.0f);
-  CHECK(s.shapes[size_t(light_shape)].a == glm::vec3(0.0f, 120.0f, 0.0f));
-  CHECK(s.shapes[size_t(box)].a.y == 10.0f);
+  CHECK(s.shapes[size_t(light_shape)].as<Sphere>()->center == glm::vec3(0.0f, 120.0f, 0.0f));
+  CHECK(s.shapes[size_t(box)].as<Box>()->min.y == 10.0f);
   const Camera cam = r.camera();
   r.set_scene(s);
   r.set_camera(cam);

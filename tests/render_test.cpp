@@ -105,7 +105,7 @@ TEST_CASE("editing values re-uploads data and never recompiles", "[gpu]") {
   CHECK(r.programs_compiled() == 1);
   s.lights[0].intensity = 5.0f;
   s.materials[0].tint = glm::vec3(0.2f);
-  s.shapes[3].a.x += 1.0f;
+  s.shapes[3].as<Box>()->min.x += 1.0f;
   r.set_scene(s);
   CHECK(r.programs_compiled() == 1);
   r.step();

@@ -13,21 +13,11 @@ inline int add_material(Scene& s, Material m) {
 }
 
 inline void add_box(Scene& s, glm::vec3 lo, glm::vec3 hi, int material) {
-  Shape b;
-  b.kind = ShapeKind::Box;
-  b.a = lo;
-  b.b = hi;
-  b.material = material;
-  s.shapes.push_back(b);
+  s.shapes.push_back(Shape(Box{.min = lo, .max = hi}, material));
 }
 
 inline void add_sphere(Scene& s, glm::vec3 c, float r, int material) {
-  Shape b;
-  b.kind = ShapeKind::Sphere;
-  b.a = c;
-  b.radius = r;
-  b.material = material;
-  s.shapes.push_back(b);
+  s.shapes.push_back(Shape(Sphere{.center = c, .radius = r}, material));
 }
 
 // Camera at `pos` looking down -z (yaw 90 in the seed's convention).
@@ -64,11 +54,7 @@ inline Scene sphere_light_over_plane(glm::vec3 center, float radius, float L) {
   s.environment.color = glm::vec3(0.0f);
   Material white, emit = Emit{};
   emit.emission = glm::vec3(L);
-  Shape plane;
-  plane.kind = ShapeKind::Plane;
-  plane.a = glm::vec3(0, 1, 0);
-  plane.material = add_material(s, white);
-  s.shapes.push_back(plane);
+  s.shapes.push_back(Shape(Plane{.normal = glm::vec3(0, 1, 0), .d = 0.0f}, add_material(s, white)));
   add_sphere(s, center, radius, add_material(s, emit));
   return s;
 }

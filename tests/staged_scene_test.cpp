@@ -157,8 +157,8 @@ TEST_CASE("a moved sphere refits the BVH in place and renders as the moved scene
   REQUIRE(sphere >= 0);
   // Far across the mesh, larger; then the light moved too.
   std::vector<int> prims, nodes;
-  scene.shapes[size_t(sphere)].a = glm::vec3(-1.2f, 0.3f, 0.5f);
-  scene.shapes[size_t(sphere)].radius = 0.6f;
+  scene.shapes[size_t(sphere)].as<Sphere>()->center = glm::vec3(-1.2f, 0.3f, 0.5f);
+  scene.shapes[size_t(sphere)].as<Sphere>()->radius = 0.6f;
   REQUIRE(refit_shape(scene, p, sphere, prims, nodes));
   scene.lights[0].position = glm::vec3(-1.0f, 2.5f, 1.0f);
   sync_light(scene, 0);
@@ -180,8 +180,8 @@ TEST_CASE("a moved sphere refits the BVH in place and renders as the moved scene
         if (tag >= 0) {
           for (const Field* f : {&prim_rec::v0, &prim_rec::v1, &prim_rec::v2}) REQUIRE(inside(lo, hi, p.prims.get3(q, *f), p.prims.get3(q, *f)));
         } else {
-          const Shape& s = scene.shapes[size_t(-1 - tag)];
-          REQUIRE(inside(lo, hi, s.a - glm::vec3(s.radius), s.a + glm::vec3(s.radius)));
+          const Sphere& s = *scene.shapes[size_t(-1 - tag)].as<Sphere>();
+          REQUIRE(inside(lo, hi, s.center - glm::vec3(s.radius), s.center + glm::vec3(s.radius)));
         }
       }
     }

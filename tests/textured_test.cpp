@@ -244,7 +244,7 @@ TEST_CASE("Textured: a file that cannot be read is an error naming it and the li
   CHECK(s.materials[0].as<Textured>()->diffuse == s.materials[0].as<Textured>()->specular);
   CHECK(s.materials[0].as<Textured>()->uvScale == glm::vec2(2, 3));
   CHECK(s.materials[0].as<Textured>()->uvOffset == glm::vec2(0.5f, 0.25f));
-  CHECK(s.shapes[1].uv[0] == glm::vec2(0.5f, 0.5f));
-  CHECK(s.shapes[1].uv[1] == glm::vec2(1.0f, 0.0f));
-  CHECK(s.shapes[1].uv[2] == glm::vec2(1.0f, 2.0f));
+  CHECK(s.shapes[1].as<Triangle>()->uv0 == glm::vec2(0.5f, 0.5f));
+  CHECK(s.shapes[1].as<Triangle>()->uv1 == glm::vec2(1.0f, 0.0f));
+  CHECK(s.shapes[1].as<Triangle>()->uv2 == glm::vec2(1.0f, 2.0f));
 }

@@ -252,11 +252,7 @@ void check_plane_under_map(std::shared_ptr<const EnvImage> map, float rotation, 
   s.environment.rotation = rotation;
   s.environment.intensity = intensity;
   Material white;
-  Shape plane;
-  plane.kind = ShapeKind::Plane;
-  plane.a = glm::vec3(0, 1, 0);
-  plane.material = add_material(s, white);
-  s.shapes.push_back(plane);
+  s.shapes.push_back(Shape(Plane{.normal = glm::vec3(0, 1, 0), .d = 0.0f}, add_material(s, white)));
   for (bool nee : {true, false}) {
     RenderSettings st;
     st.max_bounces = 1;

@@ -28,10 +28,9 @@ RANK = {
 }
 FORBIDDEN = {("cli", "app")}  # cli is on top but never reaches the UI
 # Sideways arrows within a layer that are part of the design: the scene model holds each
-# material kind's parameters (materials/all.h: the kinds know nothing of scenes); and,
-# for now, the shape kinds' CPU twins read the scene model's Shape (until a shape's
-# parameters live in its own stem, as a material's do).
-ALLOWED_SIDEWAYS = {("scene", "materials"), ("shapes", "scene")}
+# material kind's and each shape kind's parameters (materials/all.h, shapes/all.h: the
+# kinds know nothing of scenes).
+ALLOWED_SIDEWAYS = {("scene", "materials"), ("scene", "shapes")}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
 

@@ -78,18 +78,14 @@ void App::draw_selection_panel(int fb_w) {
     move_shape(scene_, selected_, p);
     edited = moved = true;
   }
-  if (sh.kind == ShapeKind::Sphere) {
-    float r = sh.radius;
-    if (ImGui::DragFloat("radius", &r, speed * 0.2f, 1e-4f, 1e6f, "%.3f")) {
-      set_sphere_radius(scene_, selected_, r);
-      edited = moved = true;
-    }
-  }
   struct ImGuiEditor {
+    float base_speed;  // the position's drag speed: a shape's fields drag relative to it
     bool color(const char* label, glm::vec3& c) { return ImGui::ColorEdit3(label, &c.x); }
     bool slider(const char* label, float& v, float lo, float hi) { return ImGui::SliderFloat(label, &v, lo, hi); }
-    bool drag3(const char* label, glm::vec3& v, float speed, float lo, float hi) { return ImGui::DragFloat3(label, &v.x, speed, lo, hi); }
-  } editor;
+    bool drag3(const char* label, glm::vec3& v, float s, float lo, float hi) { return ImGui::DragFloat3(label, &v.x, s, lo, hi); }
+    bool drag(const char* label, float& v, float s, float lo, float hi) { return ImGui::DragFloat(label, &v, base_speed * s, lo, hi, "%.3f"); }
+  } editor{speed};
+  if (edit_shape(scene_, selected_, editor)) edited = moved = true;  // the fields its kind offers
   edited |= edit_material(m, editor);  // the fields its kind offers
   if (sh.light >= 0) ImGui::TextDisabled("the scene's light %d", sh.light);
   ImGui::PopItemWidth();

@@ -1,11 +1,6 @@
 #include "app/picking.h"
 
 #include "render/camera.h"
-#include "render/packing.h"
-#include "shapes/box.h"
-#include "shapes/plane.h"
-#include "shapes/sphere.h"
-#include "shapes/triangle.h"
 
 namespace pt {
 
@@ -16,32 +11,9 @@ Ray camera_ray(const Camera& camera, glm::vec2 pixel, glm::ivec2 size) {
 }
 
 Hit intersect_scene(const Scene& scene, const Ray& r) {
-  const BoxRay br = prepare_box(r);
-  const TriangleRay tr = prepare_triangle(r);
+  const ShapeQuery q(r, ShapeContext{&scene.meshes, 1.0f});  // each kind's twin (shapes/<kind>.h)
   Hit h;
-  for (size_t i = 0; i < scene.shapes.size(); ++i) {
-    const Shape& s = scene.shapes[i];
-    switch (s.kind) {  // no default: a new kind must be handled here (-Wswitch)
-      case ShapeKind::Sphere: intersect_sphere(s, int(i), r, h); break;
-      case ShapeKind::Box: intersect_box(s, int(i), r, br, h); break;
-      case ShapeKind::Plane: intersect_plane(s, int(i), r, h); break;
-      case ShapeKind::Triangle: intersect_triangle(s, int(i), r, tr, h); break;
-      case ShapeKind::Mesh: {  // every triangle (a click is rare; the BVH is the GPU's)
-        const size_t n = scene.meshes[size_t(s.mesh)]->triangles.size();
-        for (size_t t = 0; t < n; ++t) {
-          glm::vec3 v[3];
-          mesh_triangle(scene, s, t, v);
-          Shape tri;
-          tri.kind = ShapeKind::Triangle;
-          tri.a = v[0];
-          tri.b = v[1];
-          tri.c = v[2];
-          intersect_triangle(tri, int(i), r, tr, h);
-        }
-        break;
-      }
-    }
-  }
+  for (size_t i = 0; i < scene.shapes.size(); ++i) intersect(scene.shapes[i].params, q, int(i), h);
   return h;
 }
 

@@ -1,6 +1,7 @@
 // Picking: the object under a pixel, by a CPU ray cast through the same scene with the
 // same camera math as the shader (render/camera.h, integrator.glsl's main) and the CPU
-// twins of the shapes' intersection routines (shapes/*.h beside shapes/*.glsl).
+// twins of the shapes' intersection routines (shapes/<kind>.h beside shapes/<kind>.glsl),
+// through the list of kinds.
 #pragma once
 #include <glm/glm.hpp>
 

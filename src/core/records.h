@@ -9,8 +9,10 @@
 
 #include <glm/glm.hpp>
 
-// Sphere: a = centre, radius, b = velocity (motion blur). Box: a, b = min, max.
-// Plane: a = normal, radius = d. Triangle: a, b, c = vertices.
+// The slots every shape kind shares; what each holds is its kind's (shapes/<kind>.h:
+// record(), read by the same kind's <kind>.glsl): Sphere: a = centre, radius, b =
+// velocity (motion blur). Box: a, b = min, max. Plane: a = normal, radius = d.
+// Triangle: a, b, c = vertices. Mesh: nothing (its triangles are primitives).
 #define PT_SHAPE_RECORD(F)                                   \
   F(int, kind, 0, 0) F(int, material, 0, 1) F(int, light, 0, 2) \
   F(vec3, a, 1, 0) F(float, radius, 1, 3)                    \

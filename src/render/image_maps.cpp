@@ -68,10 +68,14 @@ RecordBuffer pack_uvs(const Scene& scene) {
   RecordBuffer b(uv_rec::kTexels);
   for (const Shape& s : scene.shapes) {
     const int i = b.add();
-    if (s.kind != ShapeKind::Triangle) continue;
-    b.set(i, uv_rec::uv0, s.uv[0]);
-    b.set(i, uv_rec::uv1, s.uv[1]);
-    b.set(i, uv_rec::uv2, s.uv[2]);
+    // Kinds with vertex uv (a Triangle's: shapes/triangle.h); the others' stay zero.
+    visit_shape(s.params, [&](const auto& k) {
+      if constexpr (requires { k.uv0; k.uv1; k.uv2; }) {
+        b.set(i, uv_rec::uv0, k.uv0);
+        b.set(i, uv_rec::uv1, k.uv1);
+        b.set(i, uv_rec::uv2, k.uv2);
+      }
+    });
   }
   return b;
 }

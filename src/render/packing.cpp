@@ -43,37 +43,40 @@ void pack_shapes(const Scene& scene, PackedScene& p) {
       p.lights.set(light, light_rec::shape, i);
     }
     p.shapes.set(i, f::light, light);
-    p.shapes.set(i, f::a, s.a);
-    p.shapes.set(i, f::radius, s.radius);
-    p.shapes.set(i, f::b, s.kind == ShapeKind::Sphere ? s.velocity : s.b);
-    p.shapes.set(i, f::c, s.c);
+    const ShapeRecord r = record(s.params);  // the kind decides what its slots hold
+    p.shapes.set(i, f::a, r.a);
+    p.shapes.set(i, f::radius, r.radius);
+    p.shapes.set(i, f::b, r.b);
+    p.shapes.set(i, f::c, r.c);
   }
 }
 
 // An analytic shape's primitive: what intersect_<kind> reads of its shape record.
 void write_analytic_prim(PackedScene& p, int k, const Shape& s, int shape) {
   p.prims.set(k, prim_rec::tag, -1 - shape);
+  const ShapeRecord r = record(s.params);
   p.prims.set(k, prim_rec::kind, int(s.kind));
-  p.prims.set(k, prim_rec::v0, s.a);
-  p.prims.set(k, prim_rec::v1, s.kind == ShapeKind::Sphere ? s.velocity : s.b);
-  p.prims.set(k, prim_rec::radius, s.radius);
+  p.prims.set(k, prim_rec::v0, r.a);
+  p.prims.set(k, prim_rec::v1, r.b);
+  p.prims.set(k, prim_rec::radius, r.radius);
 }
 
 void pack_analytic_prim(PackedScene& p, const Shape& s, int shape) { write_analytic_prim(p, p.prims.add(), s, shape); }
 
-// The box the BVH holds for an analytic shape (a sphere's over the motion's times).
+// The box the BVH holds for an analytic shape: its kind's bounds (a moving sphere's over
+// the motion's times), padded.
 Aabb analytic_box(const Shape& s, float motion_bound) {
+  const ShapeBounds k = bounds(s.params, ShapeContext{nullptr, motion_bound});
   Aabb b;
-  if (s.kind == ShapeKind::Sphere) {
-    for (const glm::vec3 c : {s.a, s.a + s.velocity * motion_bound}) {
-      b.grow(c - glm::vec3(s.radius));
-      b.grow(c + glm::vec3(s.radius));
-    }
-  } else {
-    b.grow(s.a);
-    b.grow(s.b);
-  }
+  b.grow(k.lo);
+  b.grow(k.hi);
   return b.padded();
+}
+
+// A lone triangle's vertices (a Mesh's come from its mesh).
+void triangle_vertices(const Shape& s, glm::vec3 v[3]) {
+  const ShapeRecord r = record(s.params);
+  v[0] = r.a, v[1] = r.b, v[2] = r.c;
 }
 
 void write_triangle_prim(PackedScene& p, int k, int tag, const glm::vec3 v[3], glm::vec3 attr) {
@@ -90,9 +93,9 @@ bool degenerate(const glm::vec3 v[3]) { return !(glm::length(glm::cross(v[1] - v
 }  // namespace
 
 void mesh_triangle(const Scene& scene, const Shape& s, size_t tri, glm::vec3 out[3]) {
-  const MeshData& m = *scene.meshes[size_t(s.mesh)];
-  const glm::uvec3 t = m.triangles[tri];
-  for (int k = 0; k < 3; ++k) out[k] = glm::vec3(s.transform * glm::vec4(m.positions[t[k]], 1.0f));
+  const Mesh& mesh = *s.as<Mesh>();
+  const Triangle t = mesh.triangle(*scene.meshes[size_t(mesh.mesh)], tri);
+  out[0] = t.v0, out[1] = t.v1, out[2] = t.v2;
 }
 
 std::vector<int> light_shapes(const Scene& scene) {
@@ -115,7 +118,7 @@ PackJob::PackJob(const Scene& scene) : scene_(scene), vertex_base_(scene.shapes.
       ++prims;
       continue;
     }
-    const MeshData& m = *scene.meshes[size_t(s.mesh)];
+    const MeshData& m = *scene.meshes[size_t(s.as<Mesh>()->mesh)];
     const bool attributes = !m.normals.empty() || !m.uvs.empty();
     box_work_ += long(m.positions.size()) * (attributes ? 2 : 1) + long(m.triangles.size());
     prims += m.triangles.size();
@@ -220,7 +223,8 @@ void PackJob::boxes_step(long& work) {
           break;
         }
         case BvhRole::Triangles: {  // a lone Triangle
-          const glm::vec3 v[3] = {s.a, s.b, s.c};
+          glm::vec3 v[3];
+          triangle_vertices(s, v);
           if (degenerate(v)) break;
           Aabb b;
           for (const glm::vec3& q : v) b.grow(q);
@@ -233,7 +237,8 @@ void PackJob::boxes_step(long& work) {
       continue;
     }
     // A mesh instance, in three passes that each stop where the work runs out.
-    const MeshData& m = *scene_.meshes[size_t(s.mesh)];
+    const glm::mat4& transform = s.as<Mesh>()->transform;
+    const MeshData& m = *scene_.meshes[size_t(s.as<Mesh>()->mesh)];
     const auto chunk = [&](size_t total) {
       const size_t end = at_ + size_t(std::min<long>(long(total - at_), work));
       work -= long(end - at_);
@@ -247,7 +252,7 @@ void PackJob::boxes_step(long& work) {
           vertex_base_[shape_] = p_.vertices.count();
           p_.vertices.reserve(p_.vertices.count() + int(m.positions.size()));
         }
-        const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(s.transform)));
+        const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(transform)));
         for (const size_t end = chunk(m.positions.size()); at_ < end; ++at_) {
           const int k = p_.vertices.add();
           if (!m.normals.empty()) {
@@ -268,7 +273,7 @@ void PackJob::boxes_step(long& work) {
     std::vector<glm::vec3>& w = world_[shape_];
     if (pass_ == 1) {
       if (at_ == 0) w.reserve(m.positions.size());
-      for (const size_t end = chunk(m.positions.size()); at_ < end; ++at_) w.emplace_back(s.transform * glm::vec4(m.positions[at_], 1.0f));
+      for (const size_t end = chunk(m.positions.size()); at_ < end; ++at_) w.emplace_back(transform * glm::vec4(m.positions[at_], 1.0f));
       if (at_ < m.positions.size()) return;
       pass_ = 2;
       at_ = 0;
@@ -296,10 +301,11 @@ void PackJob::prims_step(long& work) {
       continue;
     }
     const int k = p_.prims.add();
-    glm::vec3 v[3] = {s.a, s.b, s.c};
+    glm::vec3 v[3];
+    triangle_vertices(s, v);
     glm::vec3 attr(-1.0f);
-    if (s.kind == ShapeKind::Mesh) {
-      const glm::uvec3 tri = scene_.meshes[size_t(s.mesh)]->triangles[size_t(ref.tri)];
+    if (const Mesh* mesh = s.as<Mesh>()) {
+      const glm::uvec3 tri = scene_.meshes[size_t(mesh->mesh)]->triangles[size_t(ref.tri)];
       const std::vector<glm::vec3>& w = world_[size_t(ref.shape)];
       v[0] = w[tri.x];
       v[1] = w[tri.y];
@@ -337,7 +343,8 @@ bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>
   if (s.kind == ShapeKind::Mesh || role == BvhRole::None) return false;
   if (p.shape_prim.size() != scene.shapes.size()) return false;  // not a pack_scene of this scene's shapes
   const int k = p.shape_prim[size_t(shape)];
-  const glm::vec3 v[3] = {s.a, s.b, s.c};
+  glm::vec3 v[3];
+  triangle_vertices(s, v);
   if (role == BvhRole::Triangles && (k < 0) != degenerate(v)) return false;  // it enters or leaves the BVH
   if (k < 0) return true;  // a degenerate triangle that stays one: nothing to draw
   if (role == BvhRole::Triangles) write_triangle_prim(p, k, shape, v, glm::vec3(-1.0f));

@@ -1,17 +1,4 @@
-// Triangle meshes as the loaders produce them (object space), shared by every instance
-// that places one in the scene (Shape of kind Mesh with its own transform).
+// Triangle meshes (shapes/mesh_data.h): the loaders of scene/ fill them; a Mesh shape
+// places one (shapes/mesh.h).
 #pragma once
-#include <vector>
-
-#include <glm/glm.hpp>
-
-namespace pt {
-
-struct MeshData {
-  std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;  // empty or one per position
-  std::vector<glm::vec2> uvs;      // empty or one per position
-  std::vector<glm::uvec3> triangles;
-};
-
-}  // namespace pt
+#include "shapes/mesh_data.h"

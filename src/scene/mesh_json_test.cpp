@@ -45,9 +45,9 @@ TEST_CASE("the reference cube.json loads through <Mesh>", "[loader][mesh]") {
   const Scene s = cube_scene(true);
   int meshes = 0;
   for (const Shape& sh : s.shapes)
-    if (sh.kind == ShapeKind::Mesh) {
+    if (const Mesh* inst = sh.as<Mesh>()) {
       ++meshes;
-      CHECK(s.meshes.at(size_t(sh.mesh))->triangles.size() == 12);
+      CHECK(s.meshes.at(size_t(inst->mesh))->triangles.size() == 12);
     }
   CHECK(meshes == 1);
   const MeshData m = parse_mesh_json(*read_file(repo_path("scenes/reference/cube.json")), "cube.json");
@@ -80,7 +80,7 @@ TEST_CASE("a Wavefront OBJ mesh loads (quads triangulated); bad ones name the fi
   const Scene s = cube_scene(true, "../assets/cube.obj");
   size_t triangles = 0;
   for (const Shape& sh : s.shapes)
-    if (sh.kind == ShapeKind::Mesh) triangles += s.meshes.at(size_t(sh.mesh))->triangles.size();
+    if (const Mesh* inst = sh.as<Mesh>()) triangles += s.meshes.at(size_t(inst->mesh))->triangles.size();
   CHECK(triangles == 12);
   const std::string dir = std::string(PT_BINARY_DIR) + "/mesh-test";
   std::filesystem::create_directories(dir);

@@ -11,9 +11,9 @@
 
 #include "materials/all.h"
 #include "scene/kinds.h"
+#include "shapes/all.h"
 #include "core/render_mode.h"
 #include "core/tonemap.h"
-#include "scene/mesh.h"
 
 namespace pt {
 
@@ -34,22 +34,31 @@ struct Material : MaterialCommon {
   const K* as() const { return std::get_if<K>(&params); }
 };
 
+// A shape: its kind's parameters (shapes/<kind>.h; the variant's index is its ShapeKind)
+// and what every shape has: its material, its light, whether the UI may move it.
 struct Shape {
+  ShapeParams params{Sphere{}};
+  // The kind params holds (its index), kept beside it for the readers that name it:
+  // set with params by the constructor and set(), never alone.
   ShapeKind kind = ShapeKind::Sphere;
-  // Sphere: a = center, radius.  Box: a = min, b = max (normalised).
-  // Plane: a = unit normal, radius = d (dot(normal, p) = d).  Triangle: a, b, c = v0, v1, v2.
-  // A moving sphere's centre at time t is a + velocity * t.
-  // Mesh: an instance of Scene::meshes[mesh], placed by `transform` (object to world).
-  glm::vec3 a{0.0f}, b{0.0f}, c{0.0f};
-  float radius = 0.0f;
-  glm::vec3 velocity{0.0f};  // Sphere only: motion blur
-  int mesh = -1;
-  glm::mat4 transform{1.0f};
-  glm::vec2 uv[3] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}};  // Triangle only: uv of v0, v1, v2
   int material = 0;
   int light = -1;  // index into Scene::lights when this shape is a light
   bool dynamic = false;
-  int line = 0;
+  int line = 0;    // scene-file line, for messages
+  Shape() = default;
+  template <class K, class = std::enable_if_t<!std::is_same_v<std::decay_t<K>, Shape> && !std::is_same_v<std::decay_t<K>, ShapeParams>>>
+  Shape(K k, int material_ = 0) : material(material_) {  // Shape s = Box{...};
+    set(std::move(k));
+  }
+  template <class K>
+  void set(K k) {
+    params = std::move(k);
+    kind = ShapeKind(params.index());
+  }
+  template <class K>
+  K* as() { return std::get_if<K>(&params); }
+  template <class K>
+  const K* as() const { return std::get_if<K>(&params); }
 };
 
 // A <Light>: an emissive sphere. lights[0] is the one the UI controls.
@@ -130,8 +139,9 @@ struct Scene {
 inline void sync_light(Scene& scene, int i) {
   const Light& l = scene.lights[size_t(i)];
   Shape& s = scene.shapes[size_t(l.shape)];
-  s.a = l.position;
-  s.radius = l.radius;
+  Sphere& sphere = *s.as<Sphere>();
+  sphere.center = l.position;
+  sphere.radius = l.radius;
   scene.materials[size_t(s.material)].emission = l.radiance();
 }
 

@@ -23,9 +23,10 @@ void require_same(const Scene& a, const Scene& b) {
   REQUIRE(a.shapes.size() == b.shapes.size());
   for (size_t i = 0; i < a.shapes.size(); ++i) {
     CHECK(a.shapes[i].kind == b.shapes[i].kind);
-    CHECK(a.shapes[i].mesh == b.shapes[i].mesh);
+    const Mesh *ma = a.shapes[i].as<Mesh>(), *mb = b.shapes[i].as<Mesh>();
+    CHECK((ma ? ma->mesh : -1) == (mb ? mb->mesh : -1));
     CHECK(a.shapes[i].material == b.shapes[i].material);
-    CHECK(a.shapes[i].transform == b.shapes[i].transform);
+    CHECK((ma ? ma->transform : glm::mat4(1.0f)) == (mb ? mb->transform : glm::mat4(1.0f)));
   }
   REQUIRE(a.materials.size() == b.materials.size());
   REQUIRE(a.meshes.size() == b.meshes.size());

@@ -60,11 +60,12 @@ TEST_CASE("scene1: the crystal table with min > max is normalised", "[loader]") 
   const Scene s = load_scene_file(repo_path("scenes/reference/scene1.xml"));
   bool found = false;
   for (const Shape& sh : s.shapes) {
-    if (sh.kind != ShapeKind::Box) continue;
-    CHECK(sh.a.x <= sh.b.x);
-    CHECK(sh.a.y <= sh.b.y);
-    CHECK(sh.a.z <= sh.b.z);
-    if (sh.a.y == Approx(41.49f) && sh.b.y == Approx(42.49f)) found = true;
+    const Box* b = sh.as<Box>();
+    if (!b) continue;
+    CHECK(b->min.x <= b->max.x);
+    CHECK(b->min.y <= b->max.y);
+    CHECK(b->min.z <= b->max.z);
+    if (b->min.y == Approx(41.49f) && b->max.y == Approx(42.49f)) found = true;
   }
   CHECK(found);
   int transmit = 0;
@@ -150,7 +151,7 @@ TEST_CASE("a missing scene file is an error naming the file", "[loader]") {
 TEST_CASE("vectors accept commas and spaces, nothing else", "[loader]") {
   const std::string h = kHead;
   const Scene s = load_scene_text(h + "<Objects><Sphere center=\"1,2 , 3\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>", "x.xml");
-  CHECK(s.shapes[0].a == glm::vec3(1, 2, 3));
+  CHECK(position(s.shapes[0].params) == glm::vec3(1, 2, 3));
   CHECK(error_of(h + "<Objects><Sphere center=\"1 2 3 4\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>").find("needs 3") !=
         std::string::npos);
   CHECK(error_of(h + "<Objects><Sphere center=\"1;2;3\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>").find("needs 3") !=
@@ -229,8 +230,8 @@ TEST_CASE("camera lens and shutter, sphere velocity", "[loader]") {
   CHECK(s.camera.aperture == 0.5f);
   CHECK(s.camera.focal_distance == 12.0f);
   CHECK(s.camera.shutter == 0.25f);
-  CHECK(s.shapes[0].velocity == glm::vec3(0, 1, 0));  // the light's sphere
-  CHECK(s.shapes[1].velocity == glm::vec3(1, 0, 0));
+  CHECK(velocity(s.shapes[0].params) == glm::vec3(0, 1, 0));  // the light's sphere
+  CHECK(velocity(s.shapes[1].params) == glm::vec3(1, 0, 0));
   CHECK(error_of("<SceneLevel><Camera position=\"0 0 10\" focalDistance=\"0\"/></SceneLevel>") ==
         "bad.xml:1: <Camera>: 'aperture' and 'shutter' must be >= 0 and 'focalDistance' > 0");
   CHECK(error_of(std::string(kHead) + "<Objects>\n<Box min=\"0 0 0\" max=\"1 1 1\" velocity=\"1 0 0\"><Diffuse/></Box></Objects></SceneLevel>") ==
@@ -239,8 +240,8 @@ TEST_CASE("camera lens and shutter, sphere velocity", "[loader]") {
   const Scene e = load_scene_text(std::string(kHead) + "<Light position=\"0 5 0\" radius=\"1\" end=\"0 6 0\"/><Objects>"
                                   "<Sphere center=\"1 2 3\" radius=\"1\" end=\"2 2 1\"><Diffuse/></Sphere></Objects></SceneLevel>",
                                   "x.xml");
-  CHECK(e.shapes[0].velocity == glm::vec3(0, 1, 0));
-  CHECK(e.shapes[1].velocity == glm::vec3(1, 0, -2));
+  CHECK(velocity(e.shapes[0].params) == glm::vec3(0, 1, 0));
+  CHECK(velocity(e.shapes[1].params) == glm::vec3(1, 0, -2));
   CHECK(error_of(std::string(kHead) + "<Objects>\n<Sphere center=\"0 0 0\" radius=\"1\" velocity=\"1 0 0\" end=\"1 1 1\"><Diffuse/></Sphere>"
                  "</Objects></SceneLevel>") == "bad.xml:5: <Sphere>: give either 'velocity' or 'end'");
 }

@@ -168,10 +168,7 @@ void Loader::mesh(const XMLElement* e) {
     if (!corners_within)
       for (const glm::vec3& v : part.mesh->positions)
         if (!within(v)) a.fail("scaled and moved, the mesh has a vertex beyond 1e9");
-    Shape s;
-    s.kind = ShapeKind::Mesh;
-    s.mesh = mesh_index(part.mesh);
-    s.transform = place * part.transform;
+    Shape s(Mesh{.mesh = mesh_index(part.mesh), .transform = place * part.transform});
     s.material = shared_material >= 0 ? shared_material : gltf_material(part.material, a);
     s.line = e->GetLineNum();
     scene.shapes.push_back(s);

@@ -1,7 +1,8 @@
-// The XML document walk (scene/xml_walk.h): <SceneLevel> and its elements, the shapes,
-// and the materials: <Attenuate> and <Emit> around a material are the walk's own; every
-// other element is a material kind that parses itself (materials/<kind>.h), found through
-// the list of kinds. Strict: unknown elements and attributes are errors with their line.
+// The XML document walk (scene/xml_walk.h): <SceneLevel> and its elements, the shapes
+// (each a shape kind that parses itself, shapes/<kind>.h, found through the list of
+// kinds; <Mesh> reads files: xml_meshes.cpp), and the materials: <Attenuate> and <Emit>
+// around a material are the walk's own; every other element is a material kind that
+// parses itself (materials/<kind>.h), found through the list of kinds. Strict: unknown elements and attributes are errors with their line.
 #include <cmath>
 #include <cstring>
 
@@ -17,61 +18,14 @@ using tinyxml2::XMLElement;
 
 namespace {
 
-// Motion blur (extension): `velocity` (per unit time), or `end`, the centre at time 1
-// (velocity = end - start); not both.
-glm::vec3 parse_motion(XmlAttrs& a, glm::vec3 start) {
-  if (a.has("velocity") && a.has("end")) a.fail("give either 'velocity' or 'end'");
-  return a.has("end") ? a.vec3("end") - start : a.vec3("velocity", glm::vec3(0.0f));
+template <class K>
+void parse_shape(XmlAttrs& a, Shape& s) {
+  if constexpr (!KindLoadedByLoader<K>::value) {
+    K k;
+    k.parse(a);
+    s.set(std::move(k));
+  }
 }
-
-void parse_sphere(XmlAttrs& a, Shape& s) {
-  s.a = a.vec3("center");
-  s.radius = a.number("radius");
-  if (!(s.radius > 0.0f)) a.fail("radius must be positive");
-  s.velocity = parse_motion(a, s.a);
-}
-
-void parse_box(XmlAttrs& a, Shape& s) {
-  const glm::vec3 p = a.vec3("min"), q = a.vec3("max");
-  // Files written for the original program give min > max on some axes: normalise.
-  s.a = glm::min(p, q);
-  s.b = glm::max(p, q);
-  if (s.a.x == s.b.x && s.a.y == s.b.y && s.a.z == s.b.z) a.fail("box has no extent");
-}
-
-void parse_plane(XmlAttrs& a, Shape& s) {
-  const glm::vec3 n = a.vec3("normal");
-  const float d = a.number("d");
-  const float len = glm::length(n);
-  if (!(len > 0.0f) || !std::isfinite(len)) a.fail("plane normal must be non-zero");
-  s.a = n / len;  // d = dot(normal, p0) scales with the normal's length
-  s.radius = d / len;
-}
-
-void parse_triangle(XmlAttrs& a, Shape& s) {
-  s.a = a.vec3("v0");
-  s.b = a.vec3("v1");
-  s.c = a.vec3("v2");
-  // Extension: texture coordinates of the three vertices (used by <Textured>).
-  const char* uv_names[3] = {"uv0", "uv1", "uv2"};
-  for (int i = 0; i < 3; ++i)
-    if (a.has(uv_names[i])) s.uv[i] = a.vec2(uv_names[i]);
-  if (!(glm::length(glm::cross(s.b - s.a, s.c - s.a)) > 0.0f)) a.fail("triangle has zero area");
-}
-
-struct ShapeParser {
-  const char* xml;
-  ShapeKind kind;
-  void (*parse)(XmlAttrs&, Shape&);
-};
-// Meshes are read from files by Loader::mesh, which shape() calls before this table.
-void parse_mesh(XmlAttrs& a, Shape&) { a.fail("internal: <Mesh> is handled by the mesh loader"); }
-
-constexpr ShapeParser kShapeParsers[] = {
-#define PT_X(e, g, x, l, r, b) {x, ShapeKind::e, &parse_##g},
-    PT_SHAPE_KINDS(PT_X)
-#undef PT_X
-};
 
 }  // namespace
 
@@ -156,23 +110,27 @@ int Loader::image_map(XmlAttrs& a, const char* attr, bool normal) {
 }
 
 void Loader::shape(const XMLElement* e) {
-  if (!std::strcmp(e->Name(), "Mesh")) return mesh(e);
-  for (const ShapeParser& p : kShapeParsers) {
-    if (std::strcmp(e->Name(), p.xml) != 0) continue;
-    Shape s;
-    s.kind = p.kind;
-    s.line = e->GetLineNum();
-    XmlAttrs a(e, file);
-    p.parse(a, s);
-    s.dynamic = a.boolean("isDynamic", false);
-    a.finish();
-    const XMLElement* m = e->FirstChildElement();
-    if (!m || m->NextSiblingElement()) a.fail("needs exactly one material element inside");
-    s.material = material(m, glm::vec3(1.0f));
-    scene.shapes.push_back(s);
-    return;
+  // One of the kinds (shapes/kinds.h): its stem parses its attributes, except a kind whose
+  // element reads files (<Mesh>: Loader::mesh).
+  Shape s;
+  s.line = e->GetLineNum();
+  bool found = false;
+#define PT_X(k, g, x, l, r, b)                          \
+  if (!found && !std::strcmp(e->Name(), x)) {           \
+    if (KindLoadedByLoader<k>::value) return mesh(e);   \
+    XmlAttrs a(e, file);                                \
+    parse_shape<k>(a, s);                               \
+    s.dynamic = a.boolean("isDynamic", false);          \
+    a.finish();                                         \
+    found = true;                                       \
   }
-  fail(e, "unknown object <" + std::string(e->Name()) + ">");
+  PT_SHAPE_KINDS(PT_X)
+#undef PT_X
+  if (!found) fail(e, "unknown object <" + std::string(e->Name()) + ">");
+  const XMLElement* m = e->FirstChildElement();
+  if (!m || m->NextSiblingElement()) XmlAttrs(e, file).fail("needs exactly one material element inside");
+  s.material = material(m, glm::vec3(1.0f));
+  scene.shapes.push_back(s);
 }
 
 void Loader::camera(const XMLElement* e) {
@@ -212,13 +170,8 @@ void Loader::light(const XMLElement* e) {
   m.emission = l.radiance();
   m.line = e->GetLineNum();
   scene.materials.push_back(m);
-  Shape s;
-  s.kind = ShapeKind::Sphere;
-  s.a = l.position;
-  s.radius = l.radius;
-  s.material = int(scene.materials.size()) - 1;
+  Shape s(Sphere{.center = l.position, .radius = l.radius, .velocity = velocity}, int(scene.materials.size()) - 1);
   s.light = int(scene.lights.size());
-  s.velocity = velocity;
   s.dynamic = true;
   s.line = e->GetLineNum();
   l.shape = int(scene.shapes.size());

@@ -1,6 +1,6 @@
 // The XML loader's document walk, shared by its files: the Loader builds a Scene from a
-// parsed document (xml_walk.cpp: the scene's elements, its shapes, and its materials, whose
-// kinds parse themselves: materials/<kind>.h; xml_meshes.cpp: <Mesh> files and glTF
+// parsed document (xml_walk.cpp: the scene's elements, its shapes and its materials, whose
+// kinds parse themselves: shapes/<kind>.h, materials/<kind>.h; xml_meshes.cpp: <Mesh> files and glTF
 // materials); SceneLoad (xml_loader.cpp) drives it. Internal to scene/.
 #pragma once
 #include <map>

@@ -21,7 +21,7 @@ const char* find_embedded_glsl(const char* name) {
 Features Features::of(const Scene& scene) {
   Features f;
   f.env_map = scene.environment.map != nullptr;
-  for (const Shape& s : scene.shapes) f.motion |= s.velocity != glm::vec3(0.0f);
+  for (const Shape& s : scene.shapes) f.motion |= velocity(s.params) != glm::vec3(0.0f);
   for (const Shape& s : scene.shapes) f.shapes |= 1u << int(s.kind);
   // Every material in the list is used (by a shape or as a composite's child), with the
   // kinds whose functions its own call (a texture shades as Diffuse).

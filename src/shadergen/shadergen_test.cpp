@@ -64,7 +64,7 @@ TEST_CASE("every kind in the lists brings exactly its own snippet", "[shadergen]
 TEST_CASE("only scenes with a moving sphere get time-dependent intersection", "[shadergen]") {
   Scene s = spheres(2);
   CHECK(generate_integrator(Features::of(s)).text.find("#define HAS_MOTION") == std::string::npos);
-  s.shapes[1].velocity = glm::vec3(1.0f, 0.0f, 0.0f);
+  s.shapes[1].as<Sphere>()->velocity = glm::vec3(1.0f, 0.0f, 0.0f);
   CHECK(Features::of(s).motion);
   CHECK(generate_integrator(Features::of(s)).text.find("#define HAS_MOTION 1") != std::string::npos);
 }

@@ -2,6 +2,8 @@
 
 #include <cctype>
 
+#include "shapes/all.h"
+
 namespace pt {
 
 std::string glsl_textured_support(const Features& f) {
@@ -14,11 +16,9 @@ std::string glsl_textured_support(const Features& f) {
     if (!f.has(ShapeKind(i))) continue;
     std::string k = kShapeKinds[i].glsl, up = k;
     for (char& c : up) c = char(std::toupper(static_cast<unsigned char>(c)));
-    // A Triangle's vertex uv live in the uv records (one per shape index).
-    // A mesh triangle's attributes hang off the primitive of the hit (mesh.glsl).
-    const std::string args = ShapeKind(i) == ShapeKind::Triangle ? "(s, load_uv(h.id), p, n)"
-                             : ShapeKind(i) == ShapeKind::Mesh   ? "(s, h.prim, p, n)"
-                                                                 : "(s, p, n)";
+    // What the kind's uv_ and tangent_ take besides the record, p and n (its stem's
+    // kUvArgs: a Triangle's vertex uv record, a mesh triangle's primitive).
+    const std::string args = std::string("(s, ") + kShapeTraits[i].uv_args + "p, n)";
     g += "  if (s.kind == SHAPE_" + up + ") return SurfaceUv(uv_" + k + args + ", tangent_" + k + args + ");\n";
   }
   g += "  return SurfaceUv(vec2(0.0), vec4(frame_from(n).t, 1.0));\n}\n";

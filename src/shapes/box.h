@@ -1,8 +1,9 @@
-// CPU twin of box.glsl's prepare_box and intersect_box (slab method, parallel axes
-// handled explicitly).
+// Box: <Box min="x y z" max="x y z">: an axis-aligned box (files written for the
+// original program give min > max on some axes: normalised on load). Record: a = min,
+// b = max. Intersection by the slab method with rays parallel to an axis handled
+// explicitly (box.glsl); the CPU twin below is the same arithmetic.
 #pragma once
-#include "scene/scene.h"
-#include "shapes/ray.h"
+#include "shapes/shape.h"
 
 namespace pt {
 
@@ -11,15 +12,47 @@ struct BoxRay {
   glm::bvec3 parallel;
 };
 
+// CPU twin of box.glsl's prepare_box.
 inline BoxRay prepare_box(const Ray& r) {
   const glm::bvec3 par = glm::lessThan(glm::abs(r.d), glm::vec3(1e-30f));
   return {1.0f / glm::mix(r.d, glm::vec3(1.0f), glm::vec3(par)), par};
 }
 
-inline void intersect_box(const Shape& s, int id, const Ray& r, const BoxRay& br, Hit& h) {
+struct Box;
+inline void intersect_box(const Box& s, int id, const Ray& r, const BoxRay& br, Hit& h);
+
+struct Box {
+  static constexpr const char* kXml = "Box";
+  static constexpr const char* kExample = "<Box min=\"-0.5 -0.7 -0.3\" max=\"0.6 0.4 0.9\"/>";
+  static constexpr const char* kUvArgs = "";
+  glm::vec3 min{-1.0f}, max{1.0f};
+
+  void parse(XmlAttrs& a) {
+    const glm::vec3 p = a.vec3("min"), q = a.vec3("max");
+    min = glm::min(p, q);
+    max = glm::max(p, q);
+    if (min.x == max.x && min.y == max.y && min.z == max.z) a.fail("box has no extent");
+  }
+  ShapeRecord record() const { return {min, max, glm::vec3(0.0f), 0.0f}; }
+  ShapeBounds bounds(const ShapeContext&) const {
+    ShapeBounds b;
+    b.grow(min);
+    b.grow(max);
+    return b;
+  }
+  template <class Q>
+  void intersect(const Q& q, int id, Hit& h) const { intersect_box(*this, id, q.r, q.box, h); }
+  glm::vec3 position() const { return 0.5f * (min + max); }
+  void move(glm::vec3 d) { min += d, max += d; }
+  template <class E>
+  bool edit(E&) { return false; }
+};
+
+// CPU twin of box.glsl's intersect_box.
+inline void intersect_box(const Box& s, int id, const Ray& r, const BoxRay& br, Hit& h) {
   for (int k = 0; k < 3; ++k)
-    if (br.parallel[k] && (r.o[k] < s.a[k] || r.o[k] > s.b[k])) return;
-  const glm::vec3 ta = (s.a - r.o) * br.inv, tb = (s.b - r.o) * br.inv;
+    if (br.parallel[k] && (r.o[k] < s.min[k] || r.o[k] > s.max[k])) return;
+  const glm::vec3 ta = (s.min - r.o) * br.inv, tb = (s.max - r.o) * br.inv;
   glm::vec3 tmin = glm::min(ta, tb), tmax = glm::max(ta, tb);
   for (int k = 0; k < 3; ++k)
     if (br.parallel[k]) tmin[k] = -T_INF, tmax[k] = T_INF;
@@ -36,7 +69,7 @@ inline void intersect_box(const Shape& s, int id, const Ray& r, const BoxRay& br
   h.id = id;
   h.n = axis * (inside ? along : -along);
   h.p = r.o + t * r.d;
-  h.p = glm::mix(h.p, glm::dot(h.n, axis) > 0.0f ? s.b : s.a, axis);
+  h.p = glm::mix(h.p, glm::dot(h.n, axis) > 0.0f ? s.max : s.min, axis);
 }
 
 }  // namespace pt

@@ -1,16 +1,61 @@
-// CPU twin of sphere.glsl's intersect_sphere (same arithmetic, Haines et al.'s form),
-// at shutter time 0: the centre is s.a.
+// Sphere: <Sphere center="x y z" radius="r" [velocity="x y z" | end="x y z"]>: the
+// points at distance `radius` of the centre, which moves to center + velocity * t over
+// the shutter (motion blur, extension; a <Light> is an emissive sphere too). Record:
+// a = centre, b = velocity, radius. Intersection in Haines et al.'s form ("Precision
+// Improvements for Ray/Sphere Intersection", Ray Tracing Gems, ch. 7), sphere.glsl; the
+// CPU twin below is the same arithmetic at shutter time 0.
 #pragma once
 #include <cmath>
 
-#include "scene/scene.h"
-#include "shapes/ray.h"
+#include "shapes/shape.h"
 
 namespace pt {
 
-inline void intersect_sphere(const Shape& s, int id, const Ray& r, Hit& h) {
-  const glm::vec3 center = s.a;
-  const glm::vec3 f = r.o - center;
+struct Sphere;
+inline void intersect_sphere(const Sphere& s, int id, const Ray& r, Hit& h);
+
+struct Sphere {
+  static constexpr const char* kXml = "Sphere";
+  static constexpr const char* kExample = "<Sphere center=\"0.2 -0.1 0.3\" radius=\"0.8\"/>";
+  static constexpr const char* kUvArgs = "";
+  glm::vec3 center{0.0f};
+  float radius = 1.0f;
+  glm::vec3 velocity{0.0f};
+
+  void parse(XmlAttrs& a) {
+    center = a.vec3("center");
+    radius = a.number("radius");
+    if (!(radius > 0.0f)) a.fail("radius must be positive");
+    velocity = parse_motion(a, center);
+  }
+  ShapeRecord record() const { return {center, velocity, glm::vec3(0.0f), radius}; }
+  // Over the times the shutter sees (the centre's path is a segment).
+  ShapeBounds bounds(const ShapeContext& ctx) const {
+    ShapeBounds b;
+    for (const glm::vec3 c : {center, center + velocity * ctx.motion_bound}) {
+      b.grow(c - glm::vec3(radius));
+      b.grow(c + glm::vec3(radius));
+    }
+    return b;
+  }
+  template <class Q>
+  void intersect(const Q& q, int id, Hit& h) const { intersect_sphere(*this, id, q.r, h); }
+  glm::vec3 position() const { return center; }
+  void move(glm::vec3 d) { center += d; }
+  // The radius, through a copy: a typed-in value <= 0 is ignored.
+  template <class E>
+  bool edit(E& e) {
+    float r = radius;
+    if (!e.drag("radius", r, 0.2f, 1e-4f, 1e6f) || !(r > 0.0f)) return false;
+    radius = r;
+    return true;
+  }
+};
+
+// CPU twin of sphere.glsl's intersect_sphere.
+inline void intersect_sphere(const Sphere& s, int id, const Ray& r, Hit& h) {
+  const glm::vec3 c0 = s.center;
+  const glm::vec3 f = r.o - c0;
   const float b = -glm::dot(f, r.d);
   const glm::vec3 l = f + b * r.d;
   const float r2 = s.radius * s.radius;
@@ -24,8 +69,8 @@ inline void intersect_sphere(const Shape& s, int id, const Ray& r, Hit& h) {
   if (!(t > 0.0f) || t >= h.t) return;
   h.t = t;
   h.id = id;
-  h.n = glm::normalize(r.o + t * r.d - center);
-  h.p = center + s.radius * h.n;
+  h.n = glm::normalize(r.o + t * r.d - c0);
+  h.p = c0 + s.radius * h.n;
 }
 
 }  // namespace pt

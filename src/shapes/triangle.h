@@ -1,8 +1,14 @@
-// CPU twin of triangle.glsl's prepare_triangle and intersect_triangle (watertight, Woop
-// et al. 2013, with the canonical edge order that makes shared edges exact).
+// Triangle: <Triangle v0="x y z" v1=".." v2=".." [uv0="u v" uv1=".." uv2=".."]>: one
+// triangle (its vertices' texture coordinates, an extension, are read by <Textured>; they
+// live in the uv records, core/records.h). Record: a, b, c = v0, v1, v2; in the BVH it
+// is a triangle primitive with its vertices inline. Intersection watertight (Woop et al.
+// 2013, "Watertight Ray/Triangle Intersection", JCGT 2(1)) with the canonical edge order
+// that makes shared edges exact (triangle.glsl); the CPU twins below are the same
+// arithmetic.
 #pragma once
-#include "scene/scene.h"
-#include "shapes/ray.h"
+#include <utility>
+
+#include "shapes/shape.h"
 
 namespace pt {
 
@@ -20,6 +26,7 @@ inline float edge_function(glm::vec3 p, glm::vec3 q, glm::vec2 ps, glm::vec2 qs)
   return vertex_before(p, q) ? ps.x * qs.y - ps.y * qs.x : -(qs.x * ps.y - qs.y * ps.x);
 }
 
+// CPU twin of triangle.glsl's prepare_triangle.
 struct TriangleRay {
   glm::vec3 x, y, z;
 };
@@ -36,14 +43,48 @@ inline TriangleRay prepare_triangle(const Ray& r) {
   return {ex - glm::dot(r.d, ex) * sz * ez, ey - glm::dot(r.d, ey) * sz * ez, sz * ez};
 }
 
-inline void intersect_triangle(const Shape& s, int id, const Ray& r, const TriangleRay& tr, Hit& h) {
-  const glm::vec3 a = s.a - r.o, b = s.b - r.o, c = s.c - r.o;
+struct Triangle;
+inline void intersect_triangle(const Triangle& s, int id, const Ray& r, const TriangleRay& tr, Hit& h);
+
+struct Triangle {
+  static constexpr const char* kXml = "Triangle";
+  static constexpr const char* kExample = "<Triangle v0=\"-0.8 -0.5 0.1\" v1=\"0.9 -0.3 -0.2\" v2=\"0.1 0.8 0.4\"/>";
+  static constexpr const char* kUvArgs = "load_uv(h.id), ";  // its vertex uv: the uv record of its shape index
+  glm::vec3 v0{0.0f}, v1{1.0f, 0.0f, 0.0f}, v2{0.0f, 1.0f, 0.0f};
+  glm::vec2 uv0{0.0f, 0.0f}, uv1{1.0f, 0.0f}, uv2{0.0f, 1.0f};
+
+  void parse(XmlAttrs& a) {
+    v0 = a.vec3("v0");
+    v1 = a.vec3("v1");
+    v2 = a.vec3("v2");
+    if (a.has("uv0")) uv0 = a.vec2("uv0");
+    if (a.has("uv1")) uv1 = a.vec2("uv1");
+    if (a.has("uv2")) uv2 = a.vec2("uv2");
+    if (!(glm::length(glm::cross(v1 - v0, v2 - v0)) > 0.0f)) a.fail("triangle has zero area");
+  }
+  ShapeRecord record() const { return {v0, v1, v2, 0.0f}; }
+  ShapeBounds bounds(const ShapeContext&) const {
+    ShapeBounds b;
+    for (const glm::vec3& q : {v0, v1, v2}) b.grow(q);
+    return b;
+  }
+  template <class Q>
+  void intersect(const Q& q, int id, Hit& h) const { intersect_triangle(*this, id, q.r, q.triangle, h); }
+  glm::vec3 position() const { return (v0 + v1 + v2) / 3.0f; }  // the centroid
+  void move(glm::vec3 d) { v0 += d, v1 += d, v2 += d; }
+  template <class E>
+  bool edit(E&) { return false; }
+};
+
+// CPU twin of triangle.glsl's intersect_triangle.
+inline void intersect_triangle(const Triangle& s, int id, const Ray& r, const TriangleRay& tr, Hit& h) {
+  const glm::vec3 a = s.v0 - r.o, b = s.v1 - r.o, c = s.v2 - r.o;
   const glm::vec2 a2(glm::dot(tr.x, a), glm::dot(tr.y, a));
   const glm::vec2 b2(glm::dot(tr.x, b), glm::dot(tr.y, b));
   const glm::vec2 c2(glm::dot(tr.x, c), glm::dot(tr.y, c));
-  const float u = edge_function(s.c, s.b, c2, b2);
-  const float v = edge_function(s.a, s.c, a2, c2);
-  const float w = edge_function(s.b, s.a, b2, a2);
+  const float u = edge_function(s.v2, s.v1, c2, b2);
+  const float v = edge_function(s.v0, s.v2, a2, c2);
+  const float w = edge_function(s.v1, s.v0, b2, a2);
   if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return;
   const float det = u + v + w;
   if (det == 0.0f) return;
@@ -51,8 +92,8 @@ inline void intersect_triangle(const Shape& s, int id, const Ray& r, const Trian
   if (!(t > 0.0f) || t >= h.t) return;
   h.t = t;
   h.id = id;
-  h.n = glm::normalize(glm::cross(s.b - s.a, s.c - s.a));
-  h.p = (u * s.a + v * s.b + w * s.c) / det;
+  h.n = glm::normalize(glm::cross(s.v1 - s.v0, s.v2 - s.v0));
+  h.p = (u * s.v0 + v * s.v1 + w * s.v2) / det;
 }
 
 }  // namespace pt
