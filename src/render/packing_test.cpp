@@ -67,7 +67,7 @@ TEST_CASE("the packing's light, parent, leaf and primitive tables agree with its
   for (size_t i = 0; i < flat.shapes.size(); ++i)
     if (flat.shapes[i].kind == ShapeKind::Triangle) degenerate = int(i);
   REQUIRE(degenerate >= 0);
-  flat.shapes[size_t(degenerate)].c = glm::vec3(2, 0, 0);
+  flat.shapes[size_t(degenerate)].as<Triangle>()->v2 = glm::vec3(2, 0, 0);
   scenes.push_back(flat);
   for (const char* f : {"scenes/reference/scene2.xml", "scenes/mesh-cube.xml", "scenes/gltf-instances.xml"})
     scenes.push_back(load_scene_file(repo_path(f)));
