@@ -113,7 +113,7 @@ PackJob::PackJob(const Scene& scene) : scene_(scene), vertex_base_(scene.shapes.
   p_.motion_bound = std::max(1.0f, scene.camera.shutter);
   size_t prims = 0;
   for (const Shape& s : scene.shapes) {
-    if (s.kind != ShapeKind::Mesh) {
+    if (info(s.kind).bvh != BvhRole::Instanced) {
       ++box_work_;
       ++prims;
       continue;
@@ -207,7 +207,7 @@ void PackJob::boxes_step(long& work) {
   for (; shape_ < scene_.shapes.size() && work > 0; ++shape_, pass_ = 0, at_ = 0) {
     const Shape& s = scene_.shapes[shape_];
     const int i = int(shape_);
-    if (s.kind != ShapeKind::Mesh) {
+    if (info(s.kind).bvh != BvhRole::Instanced) {
       --work;
       ++box_done_;
       switch (info(s.kind).bvh) {
@@ -232,6 +232,7 @@ void PackJob::boxes_step(long& work) {
           boxes_.push_back(b.padded());
           break;
         }
+        case BvhRole::Instanced:  // handled below
         case BvhRole::None: break;
       }
       continue;
@@ -295,7 +296,7 @@ void PackJob::prims_step(long& work) {
   for (const size_t end = at_ + size_t(std::min<long>(long(bvh_.order.size() - at_), work)); at_ < end; ++at_, --work) {
     const PrimRef& ref = refs_[size_t(bvh_.order[at_])];
     const Shape& s = scene_.shapes[size_t(ref.shape)];
-    if (s.kind != ShapeKind::Mesh) p_.shape_prim[size_t(ref.shape)] = p_.prims.count();  // analytic, or a lone triangle
+    if (info(s.kind).bvh != BvhRole::Instanced) p_.shape_prim[size_t(ref.shape)] = p_.prims.count();  // analytic, or a lone triangle
     if (ref.tri < 0) {
       pack_analytic_prim(p_, s, ref.shape);
       continue;
@@ -340,7 +341,7 @@ PackedScene PackJob::take() {
 bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>& prims, std::vector<int>& nodes) {
   const Shape& s = scene.shapes[size_t(shape)];
   const BvhRole role = info(s.kind).bvh;
-  if (s.kind == ShapeKind::Mesh || role == BvhRole::None) return false;
+  if (role == BvhRole::Instanced || role == BvhRole::None) return false;
   if (p.shape_prim.size() != scene.shapes.size()) return false;  // not a pack_scene of this scene's shapes
   const int k = p.shape_prim[size_t(shape)];
   glm::vec3 v[3];

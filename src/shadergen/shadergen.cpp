@@ -156,7 +156,7 @@ std::string generate_prelude(const Features& features) {
     if (f.has(MaterialKind(i))) g += "#define HAS_MAT_" + upper(kMaterialKinds[i].glsl) + " 1\n";
   if (f.env_map) g += "#define HAS_ENV_MAP 1\n";
   for (int i = 0; i < kNumShapeKinds; ++i)
-    if (f.has(ShapeKind(i)) && kShapeKinds[i].bvh == BvhRole::Triangles) {
+    if (f.has(ShapeKind(i)) && (kShapeKinds[i].bvh == BvhRole::Triangles || kShapeKinds[i].bvh == BvhRole::Instanced)) {
       g += "#define HAS_PRIM_TRIANGLES 1\n";
       break;
     }

@@ -12,8 +12,10 @@
 //              data computed once per ray (<Name>Ray prepare_<name>(Ray), passed to
 //              intersect_<name> after the ray); bvh: how it enters the acceleration
 //              structure (Analytic: one bounded primitive tested through its shape record;
-//              Triangles: its triangles are primitives with their vertices inline;
-//              Unbounded: outside the BVH, tested by every ray)
+//              Triangles: its triangle is a primitive with its vertices inline;
+//              Instanced: the triangles of a shared mesh (Scene::meshes), placed by the
+//              instance's transform, each a primitive like a Triangle's, with per-vertex
+//              attributes; Unbounded: outside the BVH, tested by every ray)
 #pragma once
 
 #define PT_SHAPE_KINDS(X)                                   \
@@ -21,7 +23,7 @@
   X(Box, box, "Box", true, true, Analytic)                    \
   X(Plane, plane, "Plane", false, false, Unbounded)           \
   X(Triangle, triangle, "Triangle", true, true, Triangles)    \
-  X(Mesh, mesh, "Mesh", false, false, Triangles)
+  X(Mesh, mesh, "Mesh", false, false, Instanced)
 
 namespace pt {
 
@@ -31,7 +33,7 @@ enum class ShapeKind : int {
 #undef PT_X
 };
 
-enum class BvhRole : int { None, Analytic, Triangles, Unbounded };
+enum class BvhRole : int { None, Analytic, Triangles, Instanced, Unbounded };
 
 struct KindInfo {
   const char* glsl;  // snippet name and function suffix: shapes/sphere.glsl, intersect_sphere
