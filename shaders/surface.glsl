@@ -36,20 +36,16 @@ void surface_resolve(inout Surface sf, Ray r, Hit h, float u_child) {
   // A shading normal (a mesh's interpolated vertex normals, a normal map) sets the BSDF's
   // frame; the geometric normal n still decides sides: a direction on different sides
   // of the two carries nothing, and rays leave off the geometric surface.
-#ifdef HAS_SHAPE_MESH
-  if (sf.s.kind == SHAPE_MESH) {
-    vec3 ns;
-    vec2 uv_unused;
-    if (mesh_attributes(h.prim, h.p, ns, uv_unused) && dot(ns, ns) > 0.0) {
-      ns = dot(ns, sf.n) < 0.0 ? -ns : ns;  // onto the side the ray came from, as n
-      if (dot(ns, -r.d) > 0.0) {  // a normal facing away from the viewer is not used
-        sf.fr = frame_from(ns);
-        sf.wo = to_local(sf.fr, -r.d);
-        sf.shading_normal = true;
-      }
+  // (A shape kind's hook: shading_normal_<kind>, e.g. a mesh's interpolated normals.)
+  vec3 ns;
+  if (shape_shading_normal(sf.s, h, ns)) {
+    ns = dot(ns, sf.n) < 0.0 ? -ns : ns;  // onto the side the ray came from, as n
+    if (dot(ns, -r.d) > 0.0) {  // a normal facing away from the viewer is not used
+      sf.fr = frame_from(ns);
+      sf.wo = to_local(sf.fr, -r.d);
+      sf.shading_normal = true;
     }
   }
-#endif
   // What shades at the hit: a texture's values there (a normal map may set the frame).
   resolve_hit(sf, r, h);
 }

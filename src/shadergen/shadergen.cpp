@@ -221,7 +221,12 @@ std::string generate_prelude(const Features& features) {
   if (!comp_cases.empty())
     comp += "  for (int level = 0; level < " + std::to_string(kMaxCompositeDepth) + "; ++level) {\n" + comp_cases + "    else break;\n  }\n";
   if (f.has(MaterialKind::Textured)) g += glsl_textured_support(f);  // image maps: uv of the shapes present
-  g += comp + "  return m;\n}\n" + hit + "}\n";
+  // A shape kind's shading normal at the hit (a mesh's interpolated vertex normals).
+  std::string sn = "bool shape_shading_normal(ShapeRec s, Hit h, out vec3 ns) {\n";
+  for (int i = 0; i < kNumShapeKinds; ++i)
+    if (f.has(ShapeKind(i)) && kShapeTraits[i].shading_normal)
+      sn += "  if (s.kind == SHAPE_" + upper(kShapeKinds[i].glsl) + ") return shading_normal_" + kShapeKinds[i].glsl + "(s, h, ns);\n";
+  g += comp + "  return m;\n}\n" + hit + "}\n" + sn + "  ns = vec3(0.0);\n  return false;\n}\n";
   // Light sampling over the emitter kinds present (solid-angle densities).
   std::string lsmp = "bool light_sample_shape(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {\n";
   std::string lpdf = "float light_pdf_shape(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {\n";

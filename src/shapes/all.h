@@ -28,14 +28,20 @@ struct KindLoadedByLoader : std::false_type {};
 template <class K>
 struct KindLoadedByLoader<K, std::void_t<decltype(K::kLoadedByLoader)>> : std::bool_constant<K::kLoadedByLoader> {};
 
+template <class K, class = void>
+struct KindShadingNormal : std::false_type {};
+template <class K>
+struct KindShadingNormal<K, std::void_t<decltype(K::kShadingNormal)>> : std::bool_constant<K::kShadingNormal> {};
+
 struct ShapeTraits {
   const char* example;   // the stem's kExample
   const char* uv_args;   // what uv_<glsl>(s, ..., p, n) takes besides the record, p and n
   bool loaded_by_loader;  // its element reads files: the loader builds it, not parse()
+  bool shading_normal;    // its GLSL defines shading_normal_<glsl> (the surface step's hook)
 };
 
 inline constexpr ShapeTraits kShapeTraits[] = {
-#define PT_X(e, g, x, l, r, b) {e::kExample, e::kUvArgs, KindLoadedByLoader<e>::value},
+#define PT_X(e, g, x, l, r, b) {e::kExample, e::kUvArgs, KindLoadedByLoader<e>::value, KindShadingNormal<e>::value},
     PT_SHAPE_KINDS(PT_X)
 #undef PT_X
 };

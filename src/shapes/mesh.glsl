@@ -27,6 +27,13 @@ bool mesh_attributes(int prim, vec3 p, out vec3 ns, out vec2 uv) {
   return true;
 }
 
+// The surface step's hook (shapes/mesh.h: kShadingNormal): the vertex normals interpolated
+// at the hit, when the mesh has them (surface.glsl orients and checks it).
+bool shading_normal_mesh(ShapeRec s, Hit h, out vec3 ns) {
+  vec2 uv_unused;
+  return mesh_attributes(h.prim, h.p, ns, uv_unused) && dot(ns, ns) > 0.0;
+}
+
 #ifdef HAS_MAT_TEXTURED
 // Image maps on meshes: the vertex uv interpolated at the hit, and the tangent along
 // dp/du from the triangle's uv parameterisation (w: the handedness of dp/dv).

@@ -15,6 +15,7 @@ struct Mesh {
   static constexpr const char* kExample = "<Mesh generate=\"icosphere\" level=\"1\" scale=\"0.7\" position=\"0.1 0 -0.2\"/>";
   static constexpr const char* kUvArgs = "h.prim, ";  // its attributes hang off the primitive of the hit
   static constexpr bool kLoadedByLoader = true;
+  static constexpr bool kShadingNormal = true;  // mesh.glsl: shading_normal_mesh, its interpolated vertex normals
   int mesh = -1;
   glm::mat4 transform{1.0f};
 
