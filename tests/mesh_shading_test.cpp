@@ -141,7 +141,7 @@ TEST_CASE("the glTF sample scene loads (instances share one mesh) and renders wi
   test_gl();
   const Scene s = load_scene_file(repo_path("scenes/gltf-instances.xml"));
   int instances = 0;
-  for (const Shape& sh : s.shapes) instances += sh.kind == ShapeKind::Mesh;
+  for (const Shape& sh : s.shapes) instances += sh.kind() == ShapeKind::Mesh;
   CHECK(instances == 9);        // three nodes in each of three placements
   CHECK(s.meshes.size() == 2);  // one torus per file (.gltf, .glb), shared by its two glTF meshes and three nodes
   const RenderResult r = render_scene(s, 48, 32, 4);

@@ -33,7 +33,7 @@ glm::vec2 project(const Camera& c, glm::vec3 p, glm::ivec2 size) {
 
 int index_of(const Scene& s, ShapeKind k) {
   for (size_t i = 0; i < s.shapes.size(); ++i)
-    if (s.shapes[i].kind == k) return int(i);
+    if (s.shapes[i].kind() == k) return int(i);
   return -1;
 }
 
@@ -53,7 +53,7 @@ TEST_CASE("pick: known pixels of reference scene0", "[picking]") {
   int seen = 0;
   for (int i = 1; i < int(s.shapes.size()); ++i) {
     const Shape& sh = s.shapes[size_t(i)];
-    if (sh.kind != ShapeKind::Box && sh.kind != ShapeKind::Sphere) continue;
+    if (sh.kind() != ShapeKind::Box && sh.kind() != ShapeKind::Sphere) continue;
     // The face (or sphere point) nearest the camera, at the shape's middle height.
     const glm::vec3 centre = shape_position(sh);
     const Ray to = {s.camera.position, glm::normalize(centre - s.camera.position)};

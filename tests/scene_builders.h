@@ -1,5 +1,6 @@
 // Small scenes built in code for the transport tests.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "render/renderer.h"
@@ -57,6 +58,17 @@ inline Scene sphere_light_over_plane(glm::vec3 center, float radius, float L) {
   s.shapes.push_back(Shape(Plane{.normal = glm::vec3(0, 1, 0), .d = 0.0f}, add_material(s, white)));
   add_sphere(s, center, radius, add_material(s, emit));
   return s;
+}
+
+// A light, a sphere, a plane and a generated icosphere mesh of 20 * 4^level triangles
+// (every BVH role and a mesh to read in slices), as XML: the loading tests' scene.
+inline std::string mixed_scene_xml(int level) {
+  return R"(<SceneLevel><Camera position="0 0 3" yaw="90" pitch="0"/>
+  <Light position="1 2 2" radius="0.3" color="1 1 1" intensity="40"/><Objects>
+  <Sphere center="1.5 0 0" radius="0.4"><Diffuse/></Sphere>
+  <Plane normal="0 1 0" d="-1"><Attenuate color="0.7 0.7 0.7"><Diffuse/></Attenuate></Plane>
+  <Mesh generate="icosphere" level=")" + std::to_string(level) + R"(" displace="0.05"><Attenuate color="0.8 0.5 0.3"><Diffuse/></Attenuate></Mesh>
+</Objects></SceneLevel>)";
 }
 
 struct RenderResult {

@@ -30,7 +30,7 @@ Scene example_scene(int kind) {
   e = e.substr(0, e.size() - 2) + "><Diffuse/></" + kShapeKinds[kind].xml + ">";
   Scene s = load_scene_text("<SceneLevel><Camera position=\"0 0 5\"/><Objects>" + e + "</Objects></SceneLevel>", repo_path("scenes") + "/x.xml");
   REQUIRE(s.shapes.size() == 1);
-  REQUIRE(int(s.shapes[0].kind) == kind);
+  REQUIRE(int(s.shapes[0].kind()) == kind);
   REQUIRE(int(s.shapes[0].params.index()) == kind);
   return s;
 }

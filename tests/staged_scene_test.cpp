@@ -10,18 +10,14 @@
 #include "render/packing.h"
 #include "render/renderer.h"
 #include "render/staged_scene.h"
+#include "scene_builders.h"
 #include "scene/xml_loader.h"
 
 using namespace pt;
 
 namespace {
 
-const char* kScene = R"(<SceneLevel><Camera position="0 0 3" yaw="90" pitch="0"/>
-  <Light position="1 2 2" radius="0.3" color="1 1 1" intensity="40"/><Objects>
-  <Sphere center="1.5 0 0" radius="0.4"><Diffuse/></Sphere>
-  <Plane normal="0 1 0" d="-1"><Attenuate color="0.7 0.7 0.7"><Diffuse/></Attenuate></Plane>
-  <Mesh generate="icosphere" level="5" displace="0.05"><Attenuate color="0.8 0.5 0.3"><Diffuse/></Attenuate></Mesh>
-</Objects></SceneLevel>)";
+const std::string kScene = mixed_scene_xml(5);
 
 std::vector<float> read_texture(const Texture& t) {
   Framebuffer f(t);
@@ -107,7 +103,7 @@ TEST_CASE("an edit of values updates the records in place and renders as the edi
   r.set_scene(scene);
   const std::vector<float> before = render(r, 2);
   for (const Shape& s : scene.shapes)
-    if (s.kind == ShapeKind::Sphere && s.light < 0) scene.materials[size_t(s.material)].tint = glm::vec3(0.2f, 0.9f, 0.3f);
+    if (s.kind() == ShapeKind::Sphere && s.light < 0) scene.materials[size_t(s.material)].tint = glm::vec3(0.2f, 0.9f, 0.3f);
   scene.lights[0].color = glm::vec3(1.0f, 0.5f, 0.25f);
   sync_light(scene, 0);
   scene.environment.color = glm::vec3(0.1f, 0.2f, 0.3f);
@@ -153,7 +149,7 @@ TEST_CASE("a moved sphere refits the BVH in place and renders as the moved scene
   const std::vector<float> before = render(r, 2);
   int sphere = -1;
   for (size_t i = 0; i < scene.shapes.size(); ++i)
-    if (scene.shapes[i].kind == ShapeKind::Sphere && scene.shapes[i].light < 0) sphere = int(i);
+    if (scene.shapes[i].kind() == ShapeKind::Sphere && scene.shapes[i].light < 0) sphere = int(i);
   REQUIRE(sphere >= 0);
   // Far across the mesh, larger; then the light moved too.
   std::vector<int> prims, nodes;
@@ -195,6 +191,6 @@ TEST_CASE("a moved sphere refits the BVH in place and renders as the moved scene
   // A mesh instance is not refitted: the caller packs again.
   int mesh = -1;
   for (size_t i = 0; i < scene.shapes.size(); ++i)
-    if (scene.shapes[i].kind == ShapeKind::Mesh) mesh = int(i);
+    if (scene.shapes[i].kind() == ShapeKind::Mesh) mesh = int(i);
   CHECK_FALSE(refit_shape(scene, p, mesh, prims, nodes));
 }

@@ -69,7 +69,7 @@ void App::draw_selection_panel(int fb_w) {
   ImGui::PushItemWidth(ImGui::GetFontSize() * 12.0f);
   Shape& sh = scene_.shapes[size_t(selected_)];
   Material& m = scene_.materials[size_t(sh.material)];
-  ImGui::Text("%s #%d (line %d)", info(sh.kind).xml, selected_, sh.line);
+  ImGui::Text("%s #%d (line %d)", info(sh.kind()).xml, selected_, sh.line);
   ImGui::Text("material: %s", info(m.kind()).xml);
   const float speed = 0.005f * std::max(1.0f, glm::length(renderer_->camera().position));
   bool edited = false, moved = false;

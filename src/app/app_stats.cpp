@@ -83,7 +83,7 @@ std::string App::stats_json() const {
   j += ",\"selected\":" + std::to_string(selected_);
   if (selected_ >= 0) {
     const Shape& sh = scene_.shapes[size_t(selected_)];
-    j += ",\"selectedKind\":" + json_string(info(sh.kind).xml) + ",\"selectedLine\":" + std::to_string(sh.line);
+    j += ",\"selectedKind\":" + json_string(info(sh.kind()).xml) + ",\"selectedLine\":" + std::to_string(sh.line);
   }
   return j + "}";
 }

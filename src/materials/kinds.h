@@ -40,16 +40,11 @@ enum class MaterialKind : int {
 struct MaterialKindInfo {
   const char* glsl;  // snippet and function suffix: materials/metal.glsl, eval_metal
   const char* xml;   // element name in scene files
+  const char* type;  // the C++ type, also its GLSL record struct: <Type>Rec
 };
 
 inline constexpr MaterialKindInfo kMaterialKinds[] = {
-#define PT_X(e, g, x) {#g, x},
-    PT_MATERIAL_KINDS(PT_X)
-#undef PT_X
-};
-// The kinds' C++ type names (also their GLSL record structs: <Type>Rec).
-inline constexpr const char* kMaterialKindTypes[] = {
-#define PT_X(e, g, x) #e,
+#define PT_X(e, g, x) {#g, x, #e},
     PT_MATERIAL_KINDS(PT_X)
 #undef PT_X
 };

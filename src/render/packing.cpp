@@ -33,7 +33,7 @@ void pack_shapes(const Scene& scene, PackedScene& p) {
   for (const Shape& s : scene.shapes) {
     namespace f = shape_rec;
     const int i = p.shapes.add();
-    p.shapes.set(i, f::kind, int(s.kind));
+    p.shapes.set(i, f::kind, int(s.kind()));
     p.shapes.set(i, f::material, s.material);
     // Emitters of samplable kinds become lights for next-event estimation.
     int light = -1;
@@ -55,7 +55,7 @@ void pack_shapes(const Scene& scene, PackedScene& p) {
 void write_analytic_prim(PackedScene& p, int k, const Shape& s, int shape) {
   p.prims.set(k, prim_rec::tag, -1 - shape);
   const ShapeRecord r = record(s.params);
-  p.prims.set(k, prim_rec::kind, int(s.kind));
+  p.prims.set(k, prim_rec::kind, int(s.kind()));
   p.prims.set(k, prim_rec::v0, r.a);
   p.prims.set(k, prim_rec::v1, r.b);
   p.prims.set(k, prim_rec::radius, r.radius);
@@ -113,7 +113,7 @@ PackJob::PackJob(const Scene& scene) : scene_(scene), vertex_base_(scene.shapes.
   p_.motion_bound = std::max(1.0f, scene.camera.shutter);
   size_t prims = 0;
   for (const Shape& s : scene.shapes) {
-    if (info(s.kind).bvh != BvhRole::Instanced) {
+    if (info(s.kind()).bvh != BvhRole::Instanced) {
       ++box_work_;
       ++prims;
       continue;
@@ -207,10 +207,10 @@ void PackJob::boxes_step(long& work) {
   for (; shape_ < scene_.shapes.size() && work > 0; ++shape_, pass_ = 0, at_ = 0) {
     const Shape& s = scene_.shapes[shape_];
     const int i = int(shape_);
-    if (info(s.kind).bvh != BvhRole::Instanced) {
+    if (info(s.kind()).bvh != BvhRole::Instanced) {
       --work;
       ++box_done_;
-      switch (info(s.kind).bvh) {
+      switch (info(s.kind()).bvh) {
         case BvhRole::Unbounded: {
           p_.shape_prim[shape_] = p_.prims.count();
           pack_analytic_prim(p_, s, i);
@@ -296,7 +296,7 @@ void PackJob::prims_step(long& work) {
   for (const size_t end = at_ + size_t(std::min<long>(long(bvh_.order.size() - at_), work)); at_ < end; ++at_, --work) {
     const PrimRef& ref = refs_[size_t(bvh_.order[at_])];
     const Shape& s = scene_.shapes[size_t(ref.shape)];
-    if (info(s.kind).bvh != BvhRole::Instanced) p_.shape_prim[size_t(ref.shape)] = p_.prims.count();  // analytic, or a lone triangle
+    if (info(s.kind()).bvh != BvhRole::Instanced) p_.shape_prim[size_t(ref.shape)] = p_.prims.count();  // analytic, or a lone triangle
     if (ref.tri < 0) {
       pack_analytic_prim(p_, s, ref.shape);
       continue;
@@ -340,7 +340,7 @@ PackedScene PackJob::take() {
 
 bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>& prims, std::vector<int>& nodes) {
   const Shape& s = scene.shapes[size_t(shape)];
-  const BvhRole role = info(s.kind).bvh;
+  const BvhRole role = info(s.kind()).bvh;
   if (role == BvhRole::Instanced || role == BvhRole::None) return false;
   if (p.shape_prim.size() != scene.shapes.size()) return false;  // not a pack_scene of this scene's shapes
   const int k = p.shape_prim[size_t(shape)];

@@ -47,7 +47,7 @@ void check_tables(const Scene& scene, const PackedScene& p) {
   for (int q = 0; q < p.prims.count(); ++q) {
     const int tag = int(p.prims.get(q, prim_rec::tag));
     const int owner = tag < 0 ? -1 - tag : tag;
-    if (tag < 0 || scene.shapes[size_t(owner)].kind != ShapeKind::Mesh) prim[size_t(owner)] = q;
+    if (tag < 0 || scene.shapes[size_t(owner)].kind() != ShapeKind::Mesh) prim[size_t(owner)] = q;
   }
   CHECK(p.node_parent == parent);
   CHECK(p.prim_leaf == leaf);
@@ -65,7 +65,7 @@ TEST_CASE("the packing's light, parent, leaf and primitive tables agree with its
   Scene flat = scenes.front();
   int degenerate = -1;
   for (size_t i = 0; i < flat.shapes.size(); ++i)
-    if (flat.shapes[i].kind == ShapeKind::Triangle) degenerate = int(i);
+    if (flat.shapes[i].kind() == ShapeKind::Triangle) degenerate = int(i);
   REQUIRE(degenerate >= 0);
   flat.shapes[size_t(degenerate)].as<Triangle>()->v2 = glm::vec3(2, 0, 0);
   scenes.push_back(flat);

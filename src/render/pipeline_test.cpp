@@ -15,18 +15,14 @@
 #include "core/error.h"
 #include "gl_context.h"
 #include "render/pipeline.h"
+#include "scene_builders.h"
 #include "test_paths.h"
 
 using namespace pt;
 
 namespace {
 
-const char* kScene = R"(<SceneLevel><Camera position="0 0 3" yaw="90" pitch="0"/>
-  <Light position="1 2 2" radius="0.3" color="1 1 1" intensity="40"/><Objects>
-  <Sphere center="1.5 0 0" radius="0.4"><Diffuse/></Sphere>
-  <Plane normal="0 1 0" d="-1"><Attenuate color="0.7 0.7 0.7"><Diffuse/></Attenuate></Plane>
-  <Mesh generate="icosphere" level="4" displace="0.05"><Attenuate color="0.8 0.5 0.3"><Diffuse/></Attenuate></Mesh>
-</Objects></SceneLevel>)";
+const std::string kScene = mixed_scene_xml(4);
 
 // A scene file under the build folder, written once per name.
 std::string scene_file(const std::string& name, const std::string& text) {

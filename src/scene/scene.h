@@ -38,9 +38,6 @@ struct Material : MaterialCommon {
 // and what every shape has: its material, its light, whether the UI may move it.
 struct Shape {
   ShapeParams params{Sphere{}};
-  // The kind params holds (its index), kept beside it for the readers that name it:
-  // set with params by the constructor and set(), never alone.
-  ShapeKind kind = ShapeKind::Sphere;
   int material = 0;
   int light = -1;  // index into Scene::lights when this shape is a light
   bool dynamic = false;
@@ -53,8 +50,8 @@ struct Shape {
   template <class K>
   void set(K k) {
     params = std::move(k);
-    kind = ShapeKind(params.index());
   }
+  ShapeKind kind() const { return ShapeKind(params.index()); }
   template <class K>
   K* as() { return std::get_if<K>(&params); }
   template <class K>
@@ -148,7 +145,7 @@ inline void sync_light(Scene& scene, int i) {
 // An emitter of a samplable kind: next-event estimation samples it as a light.
 inline bool is_sampled_light(const Scene& scene, const Shape& s) {
   const Material& m = scene.materials[size_t(s.material)];
-  return info(s.kind).samplable && (m.emission.x > 0.0f || m.emission.y > 0.0f || m.emission.z > 0.0f);
+  return info(s.kind()).samplable && (m.emission.x > 0.0f || m.emission.y > 0.0f || m.emission.z > 0.0f);
 }
 
 }  // namespace pt

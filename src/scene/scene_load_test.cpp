@@ -22,7 +22,7 @@ void require_same(const Scene& a, const Scene& b) {
   REQUIRE(a.files == b.files);
   REQUIRE(a.shapes.size() == b.shapes.size());
   for (size_t i = 0; i < a.shapes.size(); ++i) {
-    CHECK(a.shapes[i].kind == b.shapes[i].kind);
+    CHECK(a.shapes[i].kind() == b.shapes[i].kind());
     const Mesh *ma = a.shapes[i].as<Mesh>(), *mb = b.shapes[i].as<Mesh>();
     CHECK((ma ? ma->mesh : -1) == (mb ? mb->mesh : -1));
     CHECK(a.shapes[i].material == b.shapes[i].material);

@@ -47,7 +47,7 @@ TEST_CASE("scene0 loads: plane, boxes, dielectrics, a metal sphere", "[loader]")
   // 1 plane + 10 boxes + 1 sphere + the light's sphere
   CHECK(s.shapes.size() == 13);
   int boxes = 0, dielectrics = 0;
-  for (const Shape& sh : s.shapes) boxes += sh.kind == ShapeKind::Box;
+  for (const Shape& sh : s.shapes) boxes += sh.kind() == ShapeKind::Box;
   for (const Material& m : s.materials) dielectrics += m.kind() == MaterialKind::SmoothDielectric;
   CHECK(boxes == 10);
   CHECK(dielectrics == 4);

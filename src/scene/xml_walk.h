@@ -57,12 +57,7 @@ struct Loader final : MaterialLoader {
   [[noreturn]] void fail(const tinyxml2::XMLElement* e, const std::string& what);
   // Parses one material element (and whatever it wraps); returns its index.
   int material(const tinyxml2::XMLElement* e, glm::vec3 tint);
-  // <Mesh src="file.json|.obj|.gltf|.glb" position="x y z" rotation="x y z" scale="s">
-  // [material] </Mesh>: an instance of a mesh file (the seed's JSON format, Wavefront OBJ
-  // or glTF 2.0), placed by scale, then rotation (degrees about x, then y, then z), then
-  // position (extensions). The same file used twice is loaded once and instanced. The
-  // material inside applies to every triangle; a glTF file may go without one and then
-  // brings its own materials (see gltf_material).
+  // The index of mesh data d in the scene's list (added once).
   int mesh_index(const std::shared_ptr<const MeshData>& d);
   // A glTF material as ours (docs/scene-format.md, "glTF materials"): emission, then
   // transmission, then a metal without a metallic-roughness map, then image maps as
@@ -71,6 +66,12 @@ struct Loader final : MaterialLoader {
   // The source of a <Mesh> (also read ahead by SceneLoad, which loads it before the scene
   // is built); throws InputError for a malformed one.
   MeshSource mesh_source(XmlAttrs& a, const tinyxml2::XMLElement* e);
+  // <Mesh src="file.json|.obj|.gltf|.glb" position="x y z" rotation="x y z" scale="s">
+  // [material] </Mesh>: an instance of a mesh file (the seed's JSON format, Wavefront OBJ
+  // or glTF 2.0), placed by scale, then rotation (degrees about x, then y, then z), then
+  // position (extensions). The same file used twice is loaded once and instanced. The
+  // material inside applies to every triangle; a glTF file may go without one and then
+  // brings its own materials (see gltf_material).
   void mesh(const tinyxml2::XMLElement* e);
   void shape(const tinyxml2::XMLElement* e);
   void camera(const tinyxml2::XMLElement* e);

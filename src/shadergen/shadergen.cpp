@@ -22,12 +22,12 @@ Features Features::of(const Scene& scene) {
   Features f;
   f.env_map = scene.environment.map != nullptr;
   for (const Shape& s : scene.shapes) f.motion |= velocity(s.params) != glm::vec3(0.0f);
-  for (const Shape& s : scene.shapes) f.shapes |= 1u << int(s.kind);
+  for (const Shape& s : scene.shapes) f.shapes |= 1u << int(s.kind());
   // Every material in the list is used (by a shape or as a composite's child), with the
   // kinds whose functions its own call (a texture shades as Diffuse).
   for (const Material& m : scene.materials) f.materials |= kind_bit(m.kind()) | kMaterialTraits[int(m.kind())].needs;
   for (const Shape& s : scene.shapes)
-    if (is_sampled_light(scene, s)) f.lights |= 1u << int(s.kind);
+    if (is_sampled_light(scene, s)) f.lights |= 1u << int(s.kind());
   return f;
 }
 
@@ -109,7 +109,7 @@ std::string kind_record(MaterialKind k) {
   const MaterialTraits& t = kMaterialTraits[int(k)];
   if (t.num_fields == 0) return "";
   static const char* kTypes[] = {"", "float", "vec2", "vec3", "vec4"};
-  const std::string rec = std::string(kMaterialKindTypes[int(k)]) + "Rec", fn = info(k).glsl;
+  const std::string rec = std::string(info(k).type) + "Rec", fn = info(k).glsl;
   std::string decl = "struct " + rec + " {", get = rec + " " + fn + "_rec(MaterialRec m) {\n  " + rec + " r;\n",
               put = "MaterialRec with_" + fn + "_rec(MaterialRec m, " + rec + " r) {\n";
   int slot = 0;
