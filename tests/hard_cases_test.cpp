@@ -29,7 +29,7 @@ GlslKernel box_kernel() {
   return GlslKernel(
       "uniform vec3 u_dir[8];\n"
       "vec4 kernel(vec4 x, int i) {\n"
-      "  ShapeRec s; s.kind = SHAPE_BOX; s.a = vec3(-1.0); s.b = vec3(1.0);\n"
+      "  ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-1.0), vec3(1.0)));\n"
       "  Hit h = no_hit();\n"
       "  Ray r = Ray(x.xyz, u_dir[int(x.w)]);\n  intersect_box(s, 0, r, prepare_box(r), h);\n"
       "  return h.id < 0 ? vec4(-1.0, 0.0, 0.0, 0.0) : vec4(h.t, h.n);\n}\n");
@@ -104,7 +104,7 @@ TEST_CASE("triangles: rays aimed exactly at shared edges and vertices find no cr
       "  float hgt = 1.0 + 3.0 * rand01(), rad = hgt * sqrt(rand01()), phi = TWO_PI * rand01();\n"
       "  vec3 o = x.xyz + vec3(rad * cos(phi), rad * sin(phi), hgt);\n"
       "  Ray r = Ray(o, normalize(x.xyz - o));\n  Hit h = no_hit();\n"
-      "  for (int k = 0; k < NT; ++k) {\n    ShapeRec s; s.kind = SHAPE_TRIANGLE; s.a = V[3 * k]; s.b = V[3 * k + 1]; s.c = V[3 * k + 2];\n"
+      "  for (int k = 0; k < NT; ++k) {\n    ShapeRec s; s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(V[3 * k], V[3 * k + 1], V[3 * k + 2]));\n"
       "    intersect_triangle(s, k, r, prepare_triangle(r), h);\n  }\n  return vec4(float(h.id), h.t, 0.0, 0.0);\n}\n";
   GlslKernel k(body);
   // Targets: points on interior edges (shared by two triangles) and interior vertices.

@@ -238,13 +238,13 @@ TEST_CASE("chi-square: light sampling of spheres, boxes and triangles", "[gpu][s
     const char* name;
     const char* shape;
   };
-  for (const C& c : {C{"sphere light (near, wide cone)", "s.kind = SHAPE_SPHERE; s.a = vec3(0.3, -0.2, 1.5); s.radius = 1.2;"},
-                     C{"sphere light (far, narrow cone)", "s.kind = SHAPE_SPHERE; s.a = vec3(4.0, 0.3, 0.2); s.radius = 1.0;"},
-                     C{"box light (one face visible)", "s.kind = SHAPE_BOX; s.a = vec3(-1.0, -1.0, 0.5); s.b = vec3(1.0, 1.0, 2.0);"},
-                     C{"box light (two faces visible)", "s.kind = SHAPE_BOX; s.a = vec3(-2.5, -1.0, 0.4); s.b = vec3(-0.4, 1.0, 2.0);"},
-                     C{"box light (three faces visible)", "s.kind = SHAPE_BOX; s.a = vec3(0.3, 0.4, 0.5); s.b = vec3(2.0, 2.0, 2.0);"},
-                     C{"triangle light", "s.kind = SHAPE_TRIANGLE; s.a = vec3(-1.0, -1.0, 1.0); s.b = vec3(0.0, 1.5, 1.0); s.c = vec3(1.0, -1.0, 0.6);"}}) {
-    const std::string setup = std::string("const vec3 P = vec3(0.0);\nShapeRec make_light() {\n  ShapeRec s;\n  s.material = 0; s.light = 0; s.b = vec3(0.0); s.c = vec3(0.0); s.radius = 0.0;\n  ") +
+  for (const C& c : {C{"sphere light (near, wide cone)", "s.kind = SHAPE_SPHERE; s = with_sphere_rec(s, SphereRec(vec3(0.3, -0.2, 1.5), 1.2, vec3(0.0)));"},
+                     C{"sphere light (far, narrow cone)", "s.kind = SHAPE_SPHERE; s = with_sphere_rec(s, SphereRec(vec3(4.0, 0.3, 0.2), 1.0, vec3(0.0)));"},
+                     C{"box light (one face visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-1.0, -1.0, 0.5), vec3(1.0, 1.0, 2.0)));"},
+                     C{"box light (two faces visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-2.5, -1.0, 0.4), vec3(-0.4, 1.0, 2.0)));"},
+                     C{"box light (three faces visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.3, 0.4, 0.5), vec3(2.0, 2.0, 2.0)));"},
+                     C{"triangle light", "s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(vec3(-1.0, -1.0, 1.0), vec3(0.0, 1.5, 1.0), vec3(1.0, -1.0, 0.6)));"}}) {
+    const std::string setup = std::string("const vec3 P = vec3(0.0);\nShapeRec make_light() {\n  ShapeRec s;\n  s.material = 0; s.light = 0;\n  ") +
                               c.shape + "\n  return s;\n}\n" + density_helper;
     DirectionCase dc{setup, sample, "light_density(d)"};
     CHECK(direction_chi2(dc, c.name).p_value >= kAlpha);

@@ -51,32 +51,32 @@ void check_vec(glm::vec4 got, glm::vec4 want, float tol, const char* what) {
 }  // namespace
 
 TEST_CASE("uv mappings: closed forms at known points", "[gpu][textured]") {
-  const char* sphere = "ShapeRec s; s.kind = SHAPE_SPHERE; s.a = vec3(1.0, 2.0, 3.0); s.radius = 2.0;\n";
+  const char* sphere = "vec3 c = vec3(1.0, 2.0, 3.0); ShapeRec s; s.kind = SHAPE_SPHERE; s = with_sphere_rec(s, SphereRec(c, 2.0, vec3(0.0)));\n";
   struct C {
     std::string body;
     glm::vec4 want;
   };
   for (const C& c : std::vector<C>{
            // sphere: u = atan(-n.z, n.x) / 2pi (mod 1), v = 1 - acos(n.y) / pi; tangent in zw (x, z)
-           {std::string(sphere) + "vec3 n = vec3(1, 0, 0); vec4 t = tangent_sphere(s, s.a + 2.0 * n, n); return vec4(uv_sphere(s, s.a + 2.0 * n, n), t.x, t.z);", {0, 0.5f, 0, -1}},
-           {std::string(sphere) + "vec3 n = vec3(0, 0, -1); vec4 t = tangent_sphere(s, s.a + 2.0 * n, n); return vec4(uv_sphere(s, s.a + 2.0 * n, n), t.x, t.z);", {0.25f, 0.5f, -1, 0}},
-           {std::string(sphere) + "vec3 n = vec3(-1, 0, 0); return vec4(uv_sphere(s, s.a + 2.0 * n, n), 0, 0);", {0.5f, 0.5f, 0, 0}},
-           {std::string(sphere) + "vec3 n = vec3(0, 0, 1); return vec4(uv_sphere(s, s.a + 2.0 * n, n), 0, 0);", {0.75f, 0.5f, 0, 0}},
-           {std::string(sphere) + "vec3 n = vec3(0, 1, 0); vec4 t = tangent_sphere(s, s.a + 2.0 * n, n); return vec4(uv_sphere(s, s.a + 2.0 * n, n), t.x, t.z);", {0, 1, 0, -1}},
-           {std::string(sphere) + "vec3 n = vec3(0, -1, 0); return vec4(uv_sphere(s, s.a + 2.0 * n, n), 0, 0);", {0, 0, 0, 0}},
-           {std::string(sphere) + "vec3 n = normalize(vec3(1, 1, 0)); return vec4(uv_sphere(s, s.a + 2.0 * n, n), 0, 0);", {0, 0.75f, 0, 0}},
+           {std::string(sphere) + "vec3 n = vec3(1, 0, 0); vec4 t = tangent_sphere(s, c + 2.0 * n, n); return vec4(uv_sphere(s, c + 2.0 * n, n), t.x, t.z);", {0, 0.5f, 0, -1}},
+           {std::string(sphere) + "vec3 n = vec3(0, 0, -1); vec4 t = tangent_sphere(s, c + 2.0 * n, n); return vec4(uv_sphere(s, c + 2.0 * n, n), t.x, t.z);", {0.25f, 0.5f, -1, 0}},
+           {std::string(sphere) + "vec3 n = vec3(-1, 0, 0); return vec4(uv_sphere(s, c + 2.0 * n, n), 0, 0);", {0.5f, 0.5f, 0, 0}},
+           {std::string(sphere) + "vec3 n = vec3(0, 0, 1); return vec4(uv_sphere(s, c + 2.0 * n, n), 0, 0);", {0.75f, 0.5f, 0, 0}},
+           {std::string(sphere) + "vec3 n = vec3(0, 1, 0); vec4 t = tangent_sphere(s, c + 2.0 * n, n); return vec4(uv_sphere(s, c + 2.0 * n, n), t.x, t.z);", {0, 1, 0, -1}},
+           {std::string(sphere) + "vec3 n = vec3(0, -1, 0); return vec4(uv_sphere(s, c + 2.0 * n, n), 0, 0);", {0, 0, 0, 0}},
+           {std::string(sphere) + "vec3 n = normalize(vec3(1, 1, 0)); return vec4(uv_sphere(s, c + 2.0 * n, n), 0, 0);", {0, 0.75f, 0, 0}},
            // box [0,2]x[0,4]x[0,8]: every face spans [0, 1]^2
-           {"ShapeRec s; s.kind = SHAPE_BOX; s.a = vec3(0.0); s.b = vec3(2.0, 4.0, 8.0);\n return vec4(uv_box(s, vec3(2, 1, 2), vec3(1, 0, 0)), uv_box(s, vec3(0, 1, 2), vec3(-1, 0, 0)));", {0.75f, 0.25f, 0.25f, 0.25f}},
-           {"ShapeRec s; s.kind = SHAPE_BOX; s.a = vec3(0.0); s.b = vec3(2.0, 4.0, 8.0);\n return vec4(uv_box(s, vec3(1, 4, 6), vec3(0, 1, 0)), uv_box(s, vec3(1, 0, 6), vec3(0, -1, 0)));", {0.5f, 0.25f, 0.5f, 0.75f}},
-           {"ShapeRec s; s.kind = SHAPE_BOX; s.a = vec3(0.0); s.b = vec3(2.0, 4.0, 8.0);\n return vec4(uv_box(s, vec3(0.5, 3, 8), vec3(0, 0, 1)), uv_box(s, vec3(0.5, 3, 0), vec3(0, 0, -1)));", {0.25f, 0.75f, 0.75f, 0.75f}},
+           {"ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.0), vec3(2.0, 4.0, 8.0)));\n return vec4(uv_box(s, vec3(2, 1, 2), vec3(1, 0, 0)), uv_box(s, vec3(0, 1, 2), vec3(-1, 0, 0)));", {0.75f, 0.25f, 0.25f, 0.25f}},
+           {"ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.0), vec3(2.0, 4.0, 8.0)));\n return vec4(uv_box(s, vec3(1, 4, 6), vec3(0, 1, 0)), uv_box(s, vec3(1, 0, 6), vec3(0, -1, 0)));", {0.5f, 0.25f, 0.5f, 0.75f}},
+           {"ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.0), vec3(2.0, 4.0, 8.0)));\n return vec4(uv_box(s, vec3(0.5, 3, 8), vec3(0, 0, 1)), uv_box(s, vec3(0.5, 3, 0), vec3(0, 0, -1)));", {0.25f, 0.75f, 0.75f, 0.75f}},
            // plane: scene units in frame_from(normal): the floor has u = x, v = -z
-           {"ShapeRec s; s.kind = SHAPE_PLANE; s.a = vec3(0, 1, 0); s.radius = 0.0;\n vec4 t = tangent_plane(s, vec3(3, 0, -5), s.a); return vec4(uv_plane(s, vec3(3, 0, -5), s.a), t.x, t.z);", {3, 5, 1, 0}},
-           {"ShapeRec s; s.kind = SHAPE_PLANE; s.a = vec3(0, 0, 1); s.radius = 2.0;\n return vec4(uv_plane(s, vec3(3, 4, 2), s.a), 0, 0);", {3, 4, 0, 0}},
+           {"vec3 nn = vec3(0, 1, 0); ShapeRec s; s.kind = SHAPE_PLANE; s = with_plane_rec(s, PlaneRec(nn, 0.0));\n vec4 t = tangent_plane(s, vec3(3, 0, -5), nn); return vec4(uv_plane(s, vec3(3, 0, -5), nn), t.x, t.z);", {3, 5, 1, 0}},
+           {"vec3 nn = vec3(0, 0, 1); ShapeRec s; s.kind = SHAPE_PLANE; s = with_plane_rec(s, PlaneRec(nn, 2.0));\n return vec4(uv_plane(s, vec3(3, 4, 2), nn), 0, 0);", {3, 4, 0, 0}},
            // triangle: barycentric interpolation of the vertex uv
-           {"ShapeRec s; s.kind = SHAPE_TRIANGLE; s.a = vec3(0); s.b = vec3(2, 0, 0); s.c = vec3(0, 2, 0);\n UvRec t; t.uv0 = vec2(0, 0); t.uv1 = vec2(1, 0); t.uv2 = vec2(0, 1);\n"
+           {"ShapeRec s; s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(vec3(0), vec3(2, 0, 0), vec3(0, 2, 0)));\n UvRec t; t.uv0 = vec2(0, 0); t.uv1 = vec2(1, 0); t.uv2 = vec2(0, 1);\n"
             " UvRec q; q.uv0 = vec2(0.1, 0.2); q.uv1 = vec2(0.9, 0.2); q.uv2 = vec2(0.1, 1.0);\n vec3 p = vec3(1, 0.5, 0), n = vec3(0, 0, 1);\n"
             " return vec4(uv_triangle(s, t, p, n), uv_triangle(s, q, p, n));", {0.5f, 0.25f, 0.5f, 0.4f}},
-           {"ShapeRec s; s.kind = SHAPE_TRIANGLE; s.a = vec3(0); s.b = vec3(2, 0, 0); s.c = vec3(0, 2, 0);\n UvRec t; t.uv0 = vec2(0, 0); t.uv1 = vec2(-1, 0); t.uv2 = vec2(0, 1);\n"
+           {"ShapeRec s; s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(vec3(0), vec3(2, 0, 0), vec3(0, 2, 0)));\n UvRec t; t.uv0 = vec2(0, 0); t.uv1 = vec2(-1, 0); t.uv2 = vec2(0, 1);\n"
             " vec4 a = tangent_triangle(s, t, vec3(0.5), vec3(0, 0, 1)); return vec4(a.x, a.y, a.z, a.w);", {-1, 0, 0, -1}},
        }) {
     // Sphere uv go through atan (GPU transcendentals: about 1e-6 here, less exact elsewhere).
@@ -88,20 +88,24 @@ TEST_CASE("uv mappings: the tangent frame follows the uv gradient on every shape
   // At random surface points: moving by eps along t raises u (by eps |du/dp|) and keeps v;
   // moving along b = w cross(n, t) raises v and keeps u.
   GlslKernel k(
-      "vec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 5u), 0u);\n  int kind = i % 4;\n  ShapeRec s; s.radius = 2.0;\n"
+      "vec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 5u), 0u);\n  int kind = i % 4;\n  ShapeRec s;\n  vec3 sa = vec3(0.0), sb = vec3(0.0), sc = vec3(0.0); float sr = 2.0;\n"
       "  vec3 n, p; UvRec t; t.uv0 = vec2(0.3, 0.1); t.uv1 = vec2(0.9, 0.4); t.uv2 = vec2(0.2, 0.8);\n"
       "  float a = TWO_PI * (0.05 + 0.4 * rand01()), c = 0.8 * rand01() - 0.4;\n"
-      "  if (kind == 0) { s.kind = SHAPE_SPHERE; s.a = vec3(1.0); n = vec3(sqrt(1.0 - c * c) * cos(a), c, sqrt(1.0 - c * c) * sin(a)); p = s.a + 2.0 * n; }\n"
-      "  if (kind == 1) { s.kind = SHAPE_BOX; s.a = vec3(-1.0); s.b = vec3(2.0, 3.0, 1.0); int f = int(6.0 * rand01()) % 6; vec3 ax = f % 3 == 0 ? vec3(1, 0, 0) : (f % 3 == 1 ? vec3(0, 1, 0) : vec3(0, 0, 1));\n"
-      "    n = f < 3 ? ax : -ax; p = mix(s.a, s.b, vec3(0.2 + 0.6 * rand01(), 0.2 + 0.6 * rand01(), 0.2 + 0.6 * rand01())); p = mix(p, f < 3 ? s.b : s.a, ax); }\n"
-      "  if (kind == 2) { s.kind = SHAPE_PLANE; s.a = normalize(vec3(rand01() - 0.5, rand01() - 0.5, rand01() - 0.5)); s.radius = 0.7; n = s.a; p = frame_from(n).t * 3.0 * rand01() + n * 0.7; }\n"
-      "  if (kind == 3) { s.kind = SHAPE_TRIANGLE; s.a = vec3(0.0); s.b = vec3(2.0, 0.5, 0.0); s.c = vec3(0.3, 1.5, 1.0); n = normalize(cross(s.b - s.a, s.c - s.a));\n"
-      "    float r = 0.2 + 0.5 * rand01(); p = s.a + r * (s.b - s.a) * 0.5 + r * (s.c - s.a) * 0.5; }\n"
+      "  if (kind == 0) { s.kind = SHAPE_SPHERE; sa = vec3(1.0); n = vec3(sqrt(1.0 - c * c) * cos(a), c, sqrt(1.0 - c * c) * sin(a)); p = sa + 2.0 * n; }\n"
+      "  if (kind == 1) { s.kind = SHAPE_BOX; sa = vec3(-1.0); sb = vec3(2.0, 3.0, 1.0); int f = int(6.0 * rand01()) % 6; vec3 ax = f % 3 == 0 ? vec3(1, 0, 0) : (f % 3 == 1 ? vec3(0, 1, 0) : vec3(0, 0, 1));\n"
+      "    n = f < 3 ? ax : -ax; p = mix(sa, sb, vec3(0.2 + 0.6 * rand01(), 0.2 + 0.6 * rand01(), 0.2 + 0.6 * rand01())); p = mix(p, f < 3 ? sb : sa, ax); }\n"
+      "  if (kind == 2) { s.kind = SHAPE_PLANE; sa = normalize(vec3(rand01() - 0.5, rand01() - 0.5, rand01() - 0.5)); sr = 0.7; n = sa; p = frame_from(n).t * 3.0 * rand01() + n * 0.7; }\n"
+      "  if (kind == 3) { s.kind = SHAPE_TRIANGLE; sa = vec3(0.0); sb = vec3(2.0, 0.5, 0.0); sc = vec3(0.3, 1.5, 1.0); n = normalize(cross(sb - sa, sc - sa));\n"
+      "    float r = 0.2 + 0.5 * rand01(); p = sa + r * (sb - sa) * 0.5 + r * (sc - sa) * 0.5; }\n"
+      "  if (kind == 0) s = with_sphere_rec(s, SphereRec(sa, sr, vec3(0.0)));\n"
+      "  if (kind == 1) s = with_box_rec(s, BoxRec(sa, sb));\n"
+      "  if (kind == 2) s = with_plane_rec(s, PlaneRec(sa, sr));\n"
+      "  if (kind == 3) s = with_triangle_rec(s, TriangleRec(sa, sb, sc));\n"
       "  SurfaceUv su = surface_uv(s, Hit(1.0, 0, n, p, -1));\n"
       "  if (kind == 3) { su.uv = uv_triangle(s, t, p, n); su.tangent = tangent_triangle(s, t, p, n); }\n"
       "  vec3 b = su.tangent.w * cross(n, su.tangent.xyz);\n  float e = 1e-3;\n"
-      "  vec3 pt = p + e * su.tangent.xyz, pb = p + e * b;\n  if (kind == 0) { pt = s.a + 2.0 * normalize(pt - s.a); pb = s.a + 2.0 * normalize(pb - s.a); }\n"
-      "  vec3 nt = kind == 0 ? normalize(pt - s.a) : n, nb = kind == 0 ? normalize(pb - s.a) : n;\n"
+      "  vec3 pt = p + e * su.tangent.xyz, pb = p + e * b;\n  if (kind == 0) { pt = sa + 2.0 * normalize(pt - sa); pb = sa + 2.0 * normalize(pb - sa); }\n"
+      "  vec3 nt = kind == 0 ? normalize(pt - sa) : n, nb = kind == 0 ? normalize(pb - sa) : n;\n"
       "  vec2 ut = kind == 3 ? uv_triangle(s, t, pt, n) : surface_uv(s, Hit(1.0, 0, nt, pt, -1)).uv;\n"
       "  vec2 ub = kind == 3 ? uv_triangle(s, t, pb, n) : surface_uv(s, Hit(1.0, 0, nb, pb, -1)).uv;\n"
       "  vec2 dt = ut - su.uv, db = ub - su.uv;\n"

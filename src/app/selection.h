@@ -19,12 +19,7 @@ namespace pt {
 // (the panel's is ImGui's; tests record the calls). True when a value changed.
 template <class E>
 bool edit_material(Material& m, E& e) {
-  return std::visit(
-      [&](auto& k) -> bool {
-        if constexpr (std::is_same_v<std::decay_t<decltype(k)>, std::monostate>) return false;
-        else return k.edit(e, m);
-      },
-      m.params);
+  return std::visit([&](auto& k) -> bool { return k.edit(e, m); }, m.params);
 }
 
 // The point the panel shows as the object's position, its kind's (shapes/<kind>.h:

@@ -9,15 +9,14 @@
 
 #include <glm/glm.hpp>
 
-// The slots every shape kind shares; what each holds is its kind's (shapes/<kind>.h:
-// record(), read by the same kind's <kind>.glsl): Sphere: a = centre, radius, b =
-// velocity (motion blur). Box: a, b = min, max. Plane: a = normal, radius = d.
-// Triangle: a, b, c = vertices. Mesh: nothing (its triangles are primitives).
-#define PT_SHAPE_RECORD(F)                                   \
-  F(int, kind, 0, 0) F(int, material, 0, 1) F(int, light, 0, 2) \
-  F(vec3, a, 1, 0) F(float, radius, 1, 3)                    \
-  F(vec3, b, 2, 0)                                           \
-  F(vec3, c, 3, 0)
+// A shape: a header every kind shares (kind, material, light: its light record or -1)
+// and thirteen payload floats q0..q12 that belong to the kind: each kind lays out its own
+// fields over them in order (shapes/<kind>.h, PT_KIND_RECORD: core/kind_record.h).
+#define PT_SHAPE_RECORD(F)                                                              \
+  F(int, kind, 0, 0) F(int, material, 0, 1) F(int, light, 0, 2) F(float, q12, 0, 3)     \
+  F(float, q0, 1, 0) F(float, q1, 1, 1) F(float, q2, 1, 2) F(float, q3, 1, 3)           \
+  F(float, q4, 2, 0) F(float, q5, 2, 1) F(float, q6, 2, 2) F(float, q7, 2, 3)           \
+  F(float, q8, 3, 0) F(float, q9, 3, 1) F(float, q10, 3, 2) F(float, q11, 3, 3)
 
 // A material: a header every kind shares (kind, tint: the enclosing Attenuate colours
 // times the kind's own colour, emission) and nine payload floats p0..p8 that belong to
@@ -43,13 +42,14 @@
 
 // A primitive of the BVH, in leaf order. tag >= 0: a triangle of shape `tag` (vertices
 // in world space; kind = its edge-order bits, shapes/triangle.h; attr = the indices of its
-// vertices in the vertex-attribute records, or -1 when the mesh has none); tag < 0: the analytic shape -1 - tag (sphere, box, or an
-// unbounded plane) with a copy of the geometry its intersection reads (kind, a, b,
-// radius of its shape record), so the traversal never fetches the shape record.
+// vertices in the vertex-attribute records, or -1 when the mesh has none); tag < 0: the
+// analytic shape -1 - tag (sphere, box, or an unbounded plane), kind = its shape kind,
+// with a copy of the first kAnalyticSlots payload slots of its shape record in v0, v1,
+// v2, extra (prim_rec::kAnalytic), so the traversal never fetches the shape record.
 #define PT_PRIM_RECORD(F) \
   F(vec3, v0, 0, 0) F(int, tag, 0, 3) \
   F(vec3, v1, 1, 0) F(int, kind, 1, 3) \
-  F(vec3, v2, 2, 0) F(float, radius, 2, 3) \
+  F(vec3, v2, 2, 0) F(float, extra, 2, 3) \
   F(vec3, attr, 3, 0)
 
 // Per-vertex attributes of mesh instances (world space): shading normal (0 when the mesh
@@ -116,6 +116,24 @@ inline constexpr const Field* kPayload[] = {&p0, &p1, &p2, &p3, &p4, &p5, &p6, &
 inline constexpr int kPayloadSlots = 9;
 inline constexpr int kGlslSlots = 12;
 }  // namespace material_rec
+
+namespace shape_rec {
+inline constexpr const Field* kPayload[] = {&q0, &q1, &q2, &q3, &q4, &q5, &q6, &q7, &q8, &q9, &q10, &q11, &q12};
+inline constexpr int kPayloadSlots = 13;
+}  // namespace shape_rec
+
+namespace prim_rec {
+// Where an analytic primitive holds its shape's payload slots q0..q9, in slot order.
+inline constexpr int kAnalyticSlots = 10;
+inline constexpr Field kAnalyticField[kAnalyticSlots] = {
+    {"float", "v0.x", 0, 0, 1}, {"float", "v0.y", 0, 1, 1}, {"float", "v0.z", 0, 2, 1}, {"float", "v1.x", 1, 0, 1},
+    {"float", "v1.y", 1, 1, 1}, {"float", "v1.z", 1, 2, 1}, {"float", "v2.x", 2, 0, 1}, {"float", "v2.y", 2, 1, 1},
+    {"float", "v2.z", 2, 2, 1}, {"float", "extra", 2, 3, 1}};
+inline constexpr const Field* kAnalytic[kAnalyticSlots] = {&kAnalyticField[0], &kAnalyticField[1], &kAnalyticField[2],
+                                                           &kAnalyticField[3], &kAnalyticField[4], &kAnalyticField[5],
+                                                           &kAnalyticField[6], &kAnalyticField[7], &kAnalyticField[8],
+                                                           &kAnalyticField[9]};
+}  // namespace prim_rec
 
 // The material record as the shader sees it: material_layout() and the hit slots.
 const RecordLayout& material_glsl();

@@ -25,18 +25,12 @@
 
 namespace pt {
 
-using MaterialParams = std::variant<
+using MaterialParams = KindVariant<
 #define PT_X(e, g, x) e,
     PT_MATERIAL_KINDS(PT_X)
 #undef PT_X
-    std::monostate>;  // never held: it ends the list
+    ListEnd>;
 
-template <class K>
-constexpr int stored_width() {
-  int w = 0;
-  for (int i = 0; i < K::kNumFields; ++i) w += K::kFields[i].hit ? 0 : K::kFields[i].width;
-  return w;
-}
 template <class K>
 constexpr bool hit_fields_last() {
   bool hit = false;

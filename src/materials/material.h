@@ -20,6 +20,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/kind_record.h"
 #include "core/records.h"
 #include "core/xml_attrs.h"
 #include "materials/kinds.h"
@@ -62,61 +63,13 @@ struct MaterialParse {
   MaterialLoader& loader;
 };
 
-// A record field of a kind: its GLSL type and name; hit fields are filled by the shader
-// at the hit (never packed).
-struct KindField {
-  const char* type;
-  const char* name;
-  int width;
-  bool hit;
-};
-
-constexpr int kind_slot(const KindField* f, int i) {
-  int s = 0;
-  for (int k = 0; k < i; ++k) s += f[k].width;
-  return s;
-}
-
-// Inside a kind's struct: PT_KIND_RECORD(PT_METAL_FIELDS, PT_NO_FIELDS) with
-// #define PT_METAL_FIELDS(F) F(float, roughness) F(float, sampling) ...; the second list
-// holds the hit fields. Gives rec::<name> (a field's index: a scoped enum, so a field may
-// share a name with a parameter), kFields and kNumFields.
-#define PT_NO_FIELDS(F)
-#define PT_KIND_FIELD_ENUM(t, n) n,
-#define PT_KIND_FIELD_INFO(t, n) {#t, #n, ::pt::glsl_width(#t), false},
-#define PT_KIND_HIT_INFO(t, n) {#t, #n, ::pt::glsl_width(#t), true},
-#define PT_KIND_RECORD(stored, hit)                                                            \
-  enum class rec : int { stored(PT_KIND_FIELD_ENUM) hit(PT_KIND_FIELD_ENUM) kCount };            \
-  static constexpr ::pt::KindField kFields[] = {stored(PT_KIND_FIELD_INFO) hit(PT_KIND_HIT_INFO){nullptr, nullptr, 0, false}}; \
-  static constexpr int kNumFields = int(rec::kCount);
-
-// Writes one material record: the header's tint and the kind's fields by index.
-class MaterialWriter {
+// Writes one material record: the header's tint and the kind's fields by index
+// (core/kind_record.h) over the payload slots p0..p8.
+class MaterialWriter : public KindWriter {
  public:
-  MaterialWriter(RecordBuffer& b, int record, const KindField* fields) : b_(b), i_(record), fields_(fields) {}
+  MaterialWriter(RecordBuffer& b, int record, const KindField* fields)
+      : KindWriter(b, record, fields, {material_rec::kPayload, material_rec::kPayloadSlots}) {}
   glm::vec3 tint{1.0f};  // starts as the Attenuate tint; a kind multiplies its own colour in
-  // `field`: a kind's rec::<name>.
-  template <class Field>
-  void set(Field field, float v) { slot(int(field), 1, v); }
-  template <class Field>
-  void set(Field field, int v) { slot(int(field), 1, float(v)); }
-  template <class Field>
-  void set(Field field, glm::vec2 v) {
-    slot(int(field), 2, v.x);
-    slot(int(field), 2, v.y, 1);
-  }
-  template <class Field>
-  void set(Field field, glm::vec3 v) {
-    slot(int(field), 3, v.x);
-    slot(int(field), 3, v.y, 1);
-    slot(int(field), 3, v.z, 2);
-  }
-
- private:
-  void slot(int field, int width, float v, int comp = 0);
-  RecordBuffer& b_;
-  int i_;
-  const KindField* fields_;
 };
 
 // A kind's edit(): true when any of its panel fields changed. Every field is drawn (the

@@ -17,12 +17,10 @@ void pack_materials(const Scene& scene, PackedScene& p) {
     p.materials.set(i, material_rec::kind, int(m.kind()));
     std::visit(
         [&](const auto& k) {
-          if constexpr (!std::is_same_v<std::decay_t<decltype(k)>, std::monostate>) {
-            MaterialWriter w(p.materials, i, k.kFields);
-            w.tint = m.tint;
-            k.pack(w);
-            p.materials.set(i, material_rec::tint, w.tint);
-          }
+          MaterialWriter w(p.materials, i, k.kFields);
+          w.tint = m.tint;
+          k.pack(w);
+          p.materials.set(i, material_rec::tint, w.tint);
         },
         m.params);
     p.materials.set(i, material_rec::emission, m.emission);
@@ -43,22 +41,16 @@ void pack_shapes(const Scene& scene, PackedScene& p) {
       p.lights.set(light, light_rec::shape, i);
     }
     p.shapes.set(i, f::light, light);
-    const ShapeRecord r = record(s.params);  // the kind decides what its slots hold
-    p.shapes.set(i, f::a, r.a);
-    p.shapes.set(i, f::radius, r.radius);
-    p.shapes.set(i, f::b, r.b);
-    p.shapes.set(i, f::c, r.c);
+    pack_shape(s.params, p.shapes, i, {f::kPayload, f::kPayloadSlots});  // the kind's own fields
   }
 }
 
-// An analytic shape's primitive: what intersect_<kind> reads of its shape record.
+// An analytic shape's primitive: its kind and a copy of its record's fields (what
+// intersect_<kind> reads).
 void write_analytic_prim(PackedScene& p, int k, const Shape& s, int shape) {
   p.prims.set(k, prim_rec::tag, -1 - shape);
-  const ShapeRecord r = record(s.params);
   p.prims.set(k, prim_rec::kind, int(s.kind()));
-  p.prims.set(k, prim_rec::v0, r.a);
-  p.prims.set(k, prim_rec::v1, r.b);
-  p.prims.set(k, prim_rec::radius, r.radius);
+  pack_shape(s.params, p.prims, k, {prim_rec::kAnalytic, prim_rec::kAnalyticSlots});
 }
 
 void pack_analytic_prim(PackedScene& p, const Shape& s, int shape) { write_analytic_prim(p, p.prims.add(), s, shape); }
@@ -74,10 +66,7 @@ Aabb analytic_box(const Shape& s, float motion_bound) {
 }
 
 // A lone triangle's vertices (a Mesh's come from its mesh).
-void triangle_vertices(const Shape& s, glm::vec3 v[3]) {
-  const ShapeRecord r = record(s.params);
-  v[0] = r.a, v[1] = r.b, v[2] = r.c;
-}
+void triangle_vertices(const Shape& s, glm::vec3 v[3]) { shape_vertices(s.params, v); }
 
 void write_triangle_prim(PackedScene& p, int k, int tag, const glm::vec3 v[3], glm::vec3 attr) {
   p.prims.set(k, prim_rec::tag, tag);
@@ -179,6 +168,7 @@ bool PackJob::run(long work) {
         p_.bvh_depth = bvh_.depth;
         p_.prims.reserve(p_.unbounded + int(refs_.size()));
         p_.prim_leaf.assign(size_t(p_.unbounded) + refs_.size(), -1);
+        p_.prim_shape.reserve(p_.prim_leaf.size());
         at_ = 0;
         stage_ = Stage::Prims;
         break;
@@ -188,6 +178,8 @@ bool PackJob::run(long work) {
         if (at_ < bvh_.order.size()) break;
         p_.nodes.reserve(int(bvh_.nodes.size()));
         p_.node_parent.assign(bvh_.nodes.size(), -1);
+        p_.node_first.reserve(bvh_.nodes.size());
+        p_.node_count.reserve(bvh_.nodes.size());
         at_ = 0;
         stage_ = Stage::Nodes;
         break;
@@ -213,6 +205,7 @@ void PackJob::boxes_step(long& work) {
       switch (info(s.kind()).bvh) {
         case BvhRole::Unbounded: {
           p_.shape_prim[shape_] = p_.prims.count();
+          p_.prim_shape.push_back(i);
           pack_analytic_prim(p_, s, i);
           ++p_.unbounded;
           break;
@@ -297,6 +290,7 @@ void PackJob::prims_step(long& work) {
     const PrimRef& ref = refs_[size_t(bvh_.order[at_])];
     const Shape& s = scene_.shapes[size_t(ref.shape)];
     if (info(s.kind()).bvh != BvhRole::Instanced) p_.shape_prim[size_t(ref.shape)] = p_.prims.count();  // analytic, or a lone triangle
+    p_.prim_shape.push_back(ref.shape);
     if (ref.tri < 0) {
       pack_analytic_prim(p_, s, ref.shape);
       continue;
@@ -326,6 +320,8 @@ void PackJob::nodes_step(long& work) {
     p_.nodes.set(k, node_rec::hi, n.box.hi);
     p_.nodes.set(k, node_rec::first, first);
     p_.nodes.set(k, node_rec::count, n.count);
+    p_.node_first.push_back(first);
+    p_.node_count.push_back(n.count);
     if (n.count > 0)
       for (int q = first; q < first + n.count; ++q) p_.prim_leaf[size_t(q)] = k;
     else
@@ -354,15 +350,14 @@ bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>
   if (role == BvhRole::Unbounded) return true;  // planes are outside the BVH
   // The leaf's box from its primitives, then each ancestor's from its two children.
   auto prim_box = [&](int q) {
-    if (int(p.prims.get(q, prim_rec::tag)) >= 0) {
-      Aabb b;
-      for (const Field* f : {&prim_rec::v0, &prim_rec::v1, &prim_rec::v2}) b.grow(p.prims.get3(q, *f));
-      return b.padded();
-    }
-    return analytic_box(scene.shapes[size_t(-1 - int(p.prims.get(q, prim_rec::tag)))], p.motion_bound);
+    const Shape& of = scene.shapes[size_t(p.prim_shape[size_t(q)])];
+    if (info(of.kind()).bvh == BvhRole::Analytic) return analytic_box(of, p.motion_bound);
+    Aabb b;  // a triangle primitive: its vertices as written
+    for (const Field* f : {&prim_rec::v0, &prim_rec::v1, &prim_rec::v2}) b.grow(p.prims.get3(q, *f));
+    return b.padded();
   };
   for (int n = p.prim_leaf[size_t(k)]; n >= 0; n = p.node_parent[size_t(n)]) {
-    const int first = int(p.nodes.get(n, node_rec::first)), count = int(p.nodes.get(n, node_rec::count));
+    const int first = p.node_first[size_t(n)], count = p.node_count[size_t(n)];
     Aabb b;
     if (count > 0) {
       for (int q = first; q < first + count; ++q) {

@@ -22,11 +22,12 @@ struct PackedScene {
   double bvh_build_ms = 0.0;
   // Who is whose, as integers from the packing itself (never read back from the float
   // records): each light record's shape (Renderer::update_values compares them); for
-  // refit_shape, each BVH node's parent (-1: the root), each primitive's leaf (-1:
-  // unbounded) and each analytic shape's or lone triangle's primitive (-1: none). A
-  // PackedScene of pack_values has none of them.
+  // refit_shape, each BVH node's parent (-1: the root), first child or primitive and
+  // primitive count (0: interior), each primitive's leaf (-1: unbounded) and shape, and
+  // each analytic shape's or lone triangle's primitive (-1: none). A PackedScene of
+  // pack_values has none of them.
   std::vector<int> light_shape;
-  std::vector<int> node_parent, prim_leaf, shape_prim;
+  std::vector<int> node_parent, node_first, node_count, prim_leaf, prim_shape, shape_prim;
 };
 
 // The traversal's stack holds at most depth - 1 entries: hierarchies deeper than this are

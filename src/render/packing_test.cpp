@@ -1,7 +1,8 @@
-// The integer tables of a packing (PackedScene::light_shape, node_parent, prim_leaf,
-// shape_prim) come from the builder, and they say what the float records say: each light
-// record's shape, each node's parent, each primitive's leaf, each analytic shape's or lone
-// triangle's primitive. Checked against the records on the shipped scenes and on a scene
+// The integer tables of a packing (PackedScene::light_shape, node_parent, node_first,
+// node_count, prim_leaf, prim_shape, shape_prim) come from the builder, and they say what
+// the float records say: each light record's shape, each node's parent, children or
+// primitives, each primitive's leaf and shape, each analytic shape's or lone triangle's
+// primitive. Checked against the records on the shipped scenes and on a scene
 // of every shape role (planes outside the BVH, lone triangles, one degenerate, mesh instances),
 // packed in one run and in slices.
 #include <climits>
@@ -36,9 +37,12 @@ void check_tables(const Scene& scene, const PackedScene& p) {
   REQUIRE(p.node_parent.size() == size_t(p.nodes.count()));
   REQUIRE(p.prim_leaf.size() == size_t(p.prims.count()));
   REQUIRE(p.shape_prim.size() == scene.shapes.size());
-  std::vector<int> parent(p.node_parent.size(), -1), leaf(p.prim_leaf.size(), -1), prim(scene.shapes.size(), -1);
+  std::vector<int> parent(p.node_parent.size(), -1), leaf(p.prim_leaf.size(), -1), prim(scene.shapes.size(), -1), owners;
+  std::vector<int> firsts, counts;
   for (int n = 0; n < p.nodes.count(); ++n) {
     const int first = int(p.nodes.get(n, node_rec::first)), count = int(p.nodes.get(n, node_rec::count));
+    firsts.push_back(first);
+    counts.push_back(count);
     if (count > 0)
       for (int q = first; q < first + count; ++q) leaf[size_t(q)] = n;
     else
@@ -47,11 +51,15 @@ void check_tables(const Scene& scene, const PackedScene& p) {
   for (int q = 0; q < p.prims.count(); ++q) {
     const int tag = int(p.prims.get(q, prim_rec::tag));
     const int owner = tag < 0 ? -1 - tag : tag;
+    owners.push_back(owner);
     if (tag < 0 || scene.shapes[size_t(owner)].kind() != ShapeKind::Mesh) prim[size_t(owner)] = q;
   }
   CHECK(p.node_parent == parent);
   CHECK(p.prim_leaf == leaf);
   CHECK(p.shape_prim == prim);
+  CHECK(p.prim_shape == owners);
+  CHECK(p.node_first == firsts);
+  CHECK(p.node_count == counts);
   for (int q = 0; q < p.unbounded; ++q) CHECK(p.prim_leaf[size_t(q)] == -1);  // planes are outside the BVH
   if (p.nodes.count() > 0) CHECK(p.node_parent[0] == -1);
 }

@@ -17,11 +17,11 @@
 
 namespace pt {
 
-using ShapeParams = std::variant<
+using ShapeParams = KindVariant<
 #define PT_X(e, g, x, l, r, b) e,
     PT_SHAPE_KINDS(PT_X)
 #undef PT_X
-    std::monostate>;  // never held: it ends the list
+    ListEnd>;
 
 template <class K, class = void>
 struct KindLoadedByLoader : std::false_type {};
@@ -33,21 +33,34 @@ struct KindShadingNormal : std::false_type {};
 template <class K>
 struct KindShadingNormal<K, std::void_t<decltype(K::kShadingNormal)>> : std::bool_constant<K::kShadingNormal> {};
 
+template <class K, class = void>
+struct ShapeKindNeeds : std::integral_constant<unsigned, 0> {};
+template <class K>
+struct ShapeKindNeeds<K, std::void_t<decltype(K::kNeeds)>> : std::integral_constant<unsigned, K::kNeeds> {};
+
 struct ShapeTraits {
   const char* example;   // the stem's kExample
+  const KindField* fields;  // its record fields (PT_KIND_RECORD)
+  int num_fields;
+  unsigned needs;         // other shape kinds whose GLSL its own calls (kNeeds)
   const char* uv_args;   // what uv_<glsl>(s, ..., p, n) takes besides the record, p and n
   bool loaded_by_loader;  // its element reads files: the loader builds it, not parse()
   bool shading_normal;    // its GLSL defines shading_normal_<glsl> (the surface step's hook)
 };
 
 inline constexpr ShapeTraits kShapeTraits[] = {
-#define PT_X(e, g, x, l, r, b) {e::kExample, e::kUvArgs, KindLoadedByLoader<e>::value, KindShadingNormal<e>::value},
+#define PT_X(e, g, x, l, r, b) \
+  {e::kExample, e::kFields, e::kNumFields, ShapeKindNeeds<e>::value, e::kUvArgs, KindLoadedByLoader<e>::value, KindShadingNormal<e>::value},
     PT_SHAPE_KINDS(PT_X)
 #undef PT_X
 };
 
-#define PT_X(e, g, x, l, r, b) \
-  static_assert(std::variant_alternative_t<int(ShapeKind::e), ShapeParams>::kXml == std::string_view(x));
+#define PT_X(e, g, x, l, r, b)                                                                                       \
+  static_assert(std::variant_alternative_t<int(ShapeKind::e), ShapeParams>::kXml == std::string_view(x));              \
+  static_assert(stored_width<e>() <= shape_rec::kPayloadSlots, #e ": more record fields than payload slots");          \
+  static_assert((BvhRole::b != BvhRole::Analytic && BvhRole::b != BvhRole::Unbounded) ||                              \
+                    stored_width<e>() <= prim_rec::kAnalyticSlots,                                                     \
+                #e ": an analytic primitive copies at most prim_rec::kAnalyticSlots slots");
 PT_SHAPE_KINDS(PT_X)
 #undef PT_X
 
@@ -64,12 +77,7 @@ struct ShapeQuery {
 // f(kind's params) for the kind `p` holds.
 template <class P, class F>
 decltype(auto) visit_shape(P& p, F&& f) {
-  return std::visit(
-      [&](auto& k) -> decltype(auto) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(k)>, std::monostate>) return f(std::get<0>(p));  // never held
-        else return f(k);
-      },
-      p);
+  return std::visit(f, p);
 }
 
 inline void intersect(const ShapeParams& p, const ShapeQuery& q, int id, Hit& h) {
@@ -78,8 +86,20 @@ inline void intersect(const ShapeParams& p, const ShapeQuery& q, int id, Hit& h)
 inline ShapeBounds bounds(const ShapeParams& p, const ShapeContext& ctx) {
   return visit_shape(p, [&](const auto& k) { return k.bounds(ctx); });
 }
-inline ShapeRecord record(const ShapeParams& p) {
-  return visit_shape(p, [](const auto& k) { return k.record(); });
+// Writes the kind's fields into record `i` of `b` over `slots` (the shape record's
+// payload, or an analytic primitive's copy of it).
+inline void pack_shape(const ShapeParams& p, RecordBuffer& b, int i, PayloadSlots slots) {
+  visit_shape(p, [&](const auto& k) {
+    ShapeWriter w(b, i, k.kFields, slots);
+    k.pack(w);
+  });
+}
+// The vertices of a kind whose primitive is a triangle inline (BvhRole::Triangles).
+inline void shape_vertices(const ShapeParams& p, glm::vec3 v[3]) {
+  visit_shape(p, [&](const auto& k) {
+    if constexpr (requires { k.vertices(v); }) k.vertices(v);
+    else v[0] = v[1] = v[2] = glm::vec3(0.0f);
+  });
 }
 inline glm::vec3 position(const ShapeParams& p) {
   return visit_shape(p, [](const auto& k) { return k.position(); });

@@ -11,9 +11,10 @@ BoxRay prepare_box(Ray r) {
 }
 
 void intersect_box(ShapeRec s, int id, Ray r, BoxRay br, inout Hit h) {
-  if (any(br.parallel) && any(bvec3(uvec3(br.parallel) & (uvec3(lessThan(r.o, s.a)) | uvec3(greaterThan(r.o, s.b)))))) return;
-  vec3 ta = (s.a - r.o) * br.inv;
-  vec3 tb = (s.b - r.o) * br.inv;
+  BoxRec k = box_rec(s);
+  if (any(br.parallel) && any(bvec3(uvec3(br.parallel) & (uvec3(lessThan(r.o, k.lo)) | uvec3(greaterThan(r.o, k.hi)))))) return;
+  vec3 ta = (k.lo - r.o) * br.inv;
+  vec3 tb = (k.hi - r.o) * br.inv;
   vec3 tmin = mix(min(ta, tb), vec3(-T_INF), br.parallel);
   vec3 tmax = mix(max(ta, tb), vec3(T_INF), br.parallel);
   float t_near = max3(tmin);
@@ -31,19 +32,21 @@ void intersect_box(ShapeRec s, int id, Ray r, BoxRay br, inout Hit h) {
   h.n = axis * (inside ? along : -along);
   // Snap the coordinate across the face onto the face's plane.
   h.p = r.o + t * r.d;
-  h.p = mix(h.p, dot(h.n, axis) > 0.0 ? s.b : s.a, axis);
+  h.p = mix(h.p, dot(h.n, axis) > 0.0 ? k.hi : k.lo, axis);
 }
 
 #ifdef HAS_LIGHT_BOX
 // Emissive box: a point chosen uniformly by area on the faces that face p (at most
 // three; only front faces emit), converted to a solid-angle density t^2 / (|cos| A).
 vec3 box_face_areas(ShapeRec s, vec3 p) {
-  vec3 e = s.b - s.a;
-  vec3 visible = vec3(lessThan(p, s.a)) + vec3(greaterThan(p, s.b));
+  BoxRec k = box_rec(s);
+  vec3 e = k.hi - k.lo;
+  vec3 visible = vec3(lessThan(p, k.lo)) + vec3(greaterThan(p, k.hi));
   return vec3(e.y * e.z, e.x * e.z, e.x * e.y) * visible;
 }
 
 bool sample_light_box(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {
+  BoxRec k = box_rec(s);
   vec3 area = box_face_areas(s, p);
   float total = area.x + area.y + area.z;
   pdf = 0.0;
@@ -55,8 +58,8 @@ bool sample_light_box(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, ou
   float before = dot(axis, vec3(0.0, area.x, area.x + area.y));
   float v = clamp((pick - before) / dot(axis, area), 0.0, 1.0);
   vec3 f = axis.x > 0.0 ? vec3(0.0, v, u.y) : (axis.y > 0.0 ? vec3(v, 0.0, u.y) : vec3(v, u.y, 0.0));
-  vec3 q = mix(s.a, s.b, f);
-  q = mix(q, mix(s.a, s.b, vec3(greaterThan(p, s.b))), axis);  // onto the face that p sees
+  vec3 q = mix(k.lo, k.hi, f);
+  q = mix(q, mix(k.lo, k.hi, vec3(greaterThan(p, k.hi))), axis);  // onto the face that p sees
   vec3 d = q - p;
   float t2 = dot(d, d);
   wi = d * inversesqrt(t2);
@@ -87,7 +90,8 @@ vec4 tangent_box(ShapeRec s, vec3 p, vec3 n) {
   return vec4(n.z, 0.0, 0.0, 1.0);
 }
 vec2 uv_box(ShapeRec s, vec3 p, vec3 n) {
-  vec3 f = (p - s.a) / max(s.b - s.a, vec3(1e-30));  // p in [0, 1]^3
+  BoxRec k = box_rec(s);
+  vec3 f = (p - k.lo) / max(k.hi - k.lo, vec3(1e-30));  // p in [0, 1]^3
   vec3 a = abs(n);
   if (a.x > 0.5) return vec2(n.x > 0.0 ? 1.0 - f.z : f.z, f.y);
   if (a.y > 0.5) return vec2(f.x, n.y > 0.0 ? 1.0 - f.z : f.z);

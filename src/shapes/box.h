@@ -1,6 +1,6 @@
 // Box: <Box min="x y z" max="x y z">: an axis-aligned box (files written for the
-// original program give min > max on some axes: normalised on load). Record: a = min,
-// b = max. Intersection by the slab method with rays parallel to an axis handled
+// original program give min > max on some axes: normalised on load). Its record
+// holds the corners lo = min, hi = max. Intersection by the slab method with rays parallel to an axis handled
 // explicitly (box.glsl); the CPU twin below is the same arithmetic.
 #pragma once
 #include "shapes/shape.h"
@@ -27,13 +27,19 @@ struct Box {
   static constexpr const char* kUvArgs = "";
   glm::vec3 min{-1.0f}, max{1.0f};
 
+#define PT_BOX_FIELDS(F) F(vec3, lo) F(vec3, hi)
+  PT_KIND_RECORD(PT_BOX_FIELDS, PT_NO_FIELDS)
+
   void parse(XmlAttrs& a) {
     const glm::vec3 p = a.vec3("min"), q = a.vec3("max");
     min = glm::min(p, q);
     max = glm::max(p, q);
     if (min.x == max.x && min.y == max.y && min.z == max.z) a.fail("box has no extent");
   }
-  ShapeRecord record() const { return {min, max, glm::vec3(0.0f), 0.0f}; }
+  void pack(ShapeWriter& w) const {
+    w.set(rec::lo, min);
+    w.set(rec::hi, max);
+  }
   ShapeBounds bounds(const ShapeContext&) const {
     ShapeBounds b;
     b.grow(min);

@@ -15,11 +15,13 @@ struct Mesh {
   static constexpr const char* kExample = "<Mesh generate=\"icosphere\" level=\"1\" scale=\"0.7\" position=\"0.1 0 -0.2\"/>";
   static constexpr const char* kUvArgs = "h.prim, ";  // its attributes hang off the primitive of the hit
   static constexpr bool kLoadedByLoader = true;
-  static constexpr bool kShadingNormal = true;  // mesh.glsl: shading_normal_mesh, its interpolated vertex normals
+  static constexpr bool kShadingNormal = true;
+  static constexpr unsigned kNeeds = shape_bit(ShapeKind::Triangle);  // its triangles are intersected by triangle.glsl  // mesh.glsl: shading_normal_mesh, its interpolated vertex normals
   int mesh = -1;
   glm::mat4 transform{1.0f};
 
-  ShapeRecord record() const { return {}; }
+  PT_KIND_RECORD(PT_NO_FIELDS, PT_NO_FIELDS)
+  void pack(ShapeWriter&) const {}
   // Triangle `tri` in world space (the packer's arithmetic: render/packing.h mesh_triangle).
   Triangle triangle(const MeshData& m, size_t tri) const {
     const glm::uvec3 t = m.triangles[tri];

@@ -1,15 +1,16 @@
 // Infinite plane: <Plane normal="x y z" d="d">, the points p with dot(normal, p) = d
 // (the loader normalises the normal and scales d with it).
 void intersect_plane(ShapeRec s, int id, Ray r, inout Hit h) {
-  float denom = dot(s.a, r.d);
+  PlaneRec k = plane_rec(s);
+  float denom = dot(k.normal, r.d);
   if (denom == 0.0) return;  // parallel: no hit, or the ray lies in the plane
-  float t = (s.radius - dot(s.a, r.o)) / denom;
+  float t = (k.d - dot(k.normal, r.o)) / denom;
   if (t <= 0.0 || t >= h.t) return;
   h.t = t;
   h.id = id;
-  h.n = s.a;
+  h.n = k.normal;
   h.p = r.o + t * r.d;
-  h.p -= s.a * (dot(s.a, h.p) - s.radius);
+  h.p -= k.normal * (dot(k.normal, h.p) - k.d);
 }
 
 #ifdef HAS_MAT_TEXTURED
@@ -17,8 +18,12 @@ void intersect_plane(ShapeRec s, int id, Ray r, inout Hit h) {
 // (the material's uvScale sets the tile size): uv = (dot(p, t), dot(p, b)). For the floor
 // (normal +y) t = +x and b = -z: u = x, v = -z.
 vec2 uv_plane(ShapeRec s, vec3 p, vec3 n) {
-  Frame f = frame_from(s.a);
+  PlaneRec k = plane_rec(s);
+  Frame f = frame_from(k.normal);
   return vec2(dot(p, f.t), dot(p, f.b));
 }
-vec4 tangent_plane(ShapeRec s, vec3 p, vec3 n) { return vec4(frame_from(s.a).t, 1.0); }
+vec4 tangent_plane(ShapeRec s, vec3 p, vec3 n) {
+  PlaneRec k = plane_rec(s);
+  return vec4(frame_from(k.normal).t, 1.0);
+}
 #endif

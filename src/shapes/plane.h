@@ -1,6 +1,6 @@
 // Plane: <Plane normal="x y z" d="d">: the points p with dot(normal, p) = d, normal made
 // unit on load (d scales with it). Unbounded: outside the BVH, every ray tests it.
-// Record: a = unit normal, radius = d (plane.glsl); the CPU twin below is the same
+// Its record holds the unit normal and d (plane.glsl); the CPU twin below is the same
 // arithmetic.
 #pragma once
 #include <cmath>
@@ -19,6 +19,9 @@ struct Plane {
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
   float d = 0.0f;
 
+#define PT_PLANE_FIELDS(F) F(vec3, normal) F(float, d)
+  PT_KIND_RECORD(PT_PLANE_FIELDS, PT_NO_FIELDS)
+
   void parse(XmlAttrs& a) {
     const glm::vec3 n = a.vec3("normal");
     const float d0 = a.number("d");
@@ -27,7 +30,10 @@ struct Plane {
     normal = n / len;  // d = dot(normal, p0) scales with the normal's length
     d = d0 / len;
   }
-  ShapeRecord record() const { return {normal, glm::vec3(0.0f), glm::vec3(0.0f), d}; }
+  void pack(ShapeWriter& w) const {
+    w.set(rec::normal, normal);
+    w.set(rec::d, d);
+  }
   ShapeBounds bounds(const ShapeContext&) const { return {glm::vec3(-T_INF), glm::vec3(T_INF)}; }  // everything
   template <class Q>
   void intersect(const Q& q, int id, Hit& h) const { intersect_plane(*this, id, q.r, h); }

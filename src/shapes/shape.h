@@ -1,8 +1,9 @@
 // What every shape kind's stem is written against (shapes/<kind>.h):
-//  - ShapeRecord: the geometry it writes into its shape record (core/records.h,
-//    PT_SHAPE_RECORD: a, b, c, radius); the record's layout is shared, but each kind
-//    decides what goes where (its <kind>.glsl reads the same slots). An analytic
-//    primitive (PT_PRIM_RECORD) copies a, b and radius;
+//  - PT_KIND_RECORD (core/kind_record.h): its record fields, laid out over the shape
+//    record's payload slots q0.. (core/records.h) in the order listed, and pack(ShapeWriter&)
+//    writing them; its <kind>.glsl reads them as <glsl>_rec(s) (a struct <Type>Rec the
+//    generator emits from the same list). An analytic primitive (PT_PRIM_RECORD) carries
+//    a copy of the first prim_rec::kAnalyticSlots slots;
 //  - ShapeBounds: the box the BVH holds (before padding) and the tests check its hits
 //    against; ShapeContext: what bounds and intersection may need of the scene;
 //  - its intersection: template <class Q> intersect(const Q&, int id, Hit&), where Q
@@ -11,15 +12,18 @@
 // A stem declares kXml (its element), kExample (an element the tests loop over), kUvArgs
 // (the arguments its uv_<glsl> / tangent_<glsl> take after the shape record, before
 // p and n), parse(XmlAttrs&) (strict) or kLoadedByLoader (its element reads files:
-// the loader builds it), record(), bounds(ctx), position(), move(delta) and
-// edit(editor) (its panel fields besides the position).
+// the loader builds it), pack(w), bounds(ctx), position(), move(delta) and
+// edit(editor) (its panel fields besides the position); optionally kNeeds (bits of the
+// shape kinds whose GLSL its own calls) and, for BvhRole::Triangles, vertices(v).
 #pragma once
 #include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "core/kind_record.h"
 #include "core/xml_attrs.h"
+#include "shapes/kinds.h"
 #include "shapes/mesh_data.h"
 #include "shapes/ray.h"
 
@@ -27,10 +31,14 @@ namespace pt {
 
 using MeshList = std::vector<std::shared_ptr<const MeshData>>;
 
-struct ShapeRecord {
-  glm::vec3 a{0.0f}, b{0.0f}, c{0.0f};
-  float radius = 0.0f;
+// Writes a kind's fields into a shape record's payload, or into an analytic primitive's
+// copy of them.
+class ShapeWriter : public KindWriter {
+ public:
+  ShapeWriter(RecordBuffer& b, int record, const KindField* fields, PayloadSlots slots) : KindWriter(b, record, fields, slots) {}
 };
+
+constexpr unsigned shape_bit(ShapeKind k) { return 1u << int(k); }
 
 struct ShapeBounds {
   glm::vec3 lo{3.0e38f}, hi{-3.0e38f};  // empty: lo > hi

@@ -5,17 +5,18 @@
 // perpendicular offset, so it stays accurate far from the origin and for small spheres.
 // Only scenes with a moving sphere pay for the time (Features::motion).
 #ifdef HAS_MOTION
-vec3 sphere_center(ShapeRec s) { return s.a + s.b * g_time; }
+vec3 sphere_center(ShapeRec s) { SphereRec k = sphere_rec(s); return k.center + k.velocity * g_time; }
 #else
-vec3 sphere_center(ShapeRec s) { return s.a; }
+vec3 sphere_center(ShapeRec s) { SphereRec k = sphere_rec(s); return k.center; }
 #endif
 
 void intersect_sphere(ShapeRec s, int id, Ray r, inout Hit h) {
+  SphereRec k = sphere_rec(s);
   vec3 center = sphere_center(s);
   vec3 f = r.o - center;
   float b = -dot(f, r.d);
   vec3 l = f + b * r.d;
-  float r2 = s.radius * s.radius;
+  float r2 = k.radius * k.radius;
   float disc = r2 - dot(l, l);
   if (disc < 0.0) return;
   float q = b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc);
@@ -28,7 +29,7 @@ void intersect_sphere(ShapeRec s, int id, Ray r, inout Hit h) {
   h.t = t;
   h.id = id;
   h.n = normalize(r.o + t * r.d - center);
-  h.p = center + s.radius * h.n;
+  h.p = center + k.radius * h.n;
 }
 
 #ifdef HAS_LIGHT_SPHERE
@@ -36,12 +37,14 @@ void intersect_sphere(ShapeRec s, int id, Ray r, inout Hit h) {
 // (pbrt-v4, 6.2.3), which covers exactly its visible part. 1 - cos(theta_max) comes from
 // sin^2 so it stays accurate for small, far lights. No sample from inside the sphere.
 float sphere_cone(ShapeRec s, vec3 p) {
+  SphereRec k = sphere_rec(s);
   vec3 toc = sphere_center(s) - p;
-  float sin2 = s.radius * s.radius / dot(toc, toc);
+  float sin2 = k.radius * k.radius / dot(toc, toc);
   return sin2 >= 1.0 ? 0.0 : sin2 / (1.0 + sqrt(1.0 - sin2));
 }
 
 bool sample_light_sphere(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {
+  SphereRec k = sphere_rec(s);
   float omc = sphere_cone(s, p);
   pdf = omc > 0.0 ? 1.0 / (TWO_PI * omc) : 0.0;
   dist = 0.0;
@@ -52,7 +55,7 @@ bool sample_light_sphere(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf,
   vec3 f = p - sphere_center(s);
   float b = -dot(f, wi);
   vec3 l = f + b * wi;
-  dist = b - sqrt(max(s.radius * s.radius - dot(l, l), 0.0));
+  dist = b - sqrt(max(k.radius * k.radius - dot(l, l), 0.0));
   return true;
 }
 

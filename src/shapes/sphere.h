@@ -1,7 +1,7 @@
 // Sphere: <Sphere center="x y z" radius="r" [velocity="x y z" | end="x y z"]>: the
 // points at distance `radius` of the centre, which moves to center + velocity * t over
-// the shutter (motion blur, extension; a <Light> is an emissive sphere too). Record:
-// a = centre, b = velocity, radius. Intersection in Haines et al.'s form ("Precision
+// the shutter (motion blur, extension; a <Light> is an emissive sphere too). Its record
+// holds the centre, the radius and the velocity. Intersection in Haines et al.'s form ("Precision
 // Improvements for Ray/Sphere Intersection", Ray Tracing Gems, ch. 7), sphere.glsl; the
 // CPU twin below is the same arithmetic at shutter time 0.
 #pragma once
@@ -22,13 +22,20 @@ struct Sphere {
   float radius = 1.0f;
   glm::vec3 velocity{0.0f};
 
+#define PT_SPHERE_FIELDS(F) F(vec3, center) F(float, radius) F(vec3, velocity)
+  PT_KIND_RECORD(PT_SPHERE_FIELDS, PT_NO_FIELDS)
+
   void parse(XmlAttrs& a) {
     center = a.vec3("center");
     radius = a.number("radius");
     if (!(radius > 0.0f)) a.fail("radius must be positive");
     velocity = parse_motion(a, center);
   }
-  ShapeRecord record() const { return {center, velocity, glm::vec3(0.0f), radius}; }
+  void pack(ShapeWriter& w) const {
+    w.set(rec::center, center);
+    w.set(rec::radius, radius);
+    w.set(rec::velocity, velocity);
+  }
   // Over the times the shutter sees (the centre's path is a segment).
   ShapeBounds bounds(const ShapeContext& ctx) const {
     ShapeBounds b;

@@ -71,21 +71,23 @@ void triangle_prim(PrimRec p, Ray r, TriangleRay tr, inout Hit h) {
 }
 
 void intersect_triangle(ShapeRec s, int id, Ray r, TriangleRay tr, inout Hit h) {
-  intersect_triangle_verts(s.a, s.b, s.c, triangle_edge_order(s.a, s.b, s.c), id, r, tr, h);
+  TriangleRec k = triangle_rec(s);
+  intersect_triangle_verts(k.v0, k.v1, k.v2, triangle_edge_order(k.v0, k.v1, k.v2), id, r, tr, h);
 }
 
 #ifdef HAS_LIGHT_TRIANGLE
 // Emissive triangle: uniform by area (square-root barycentrics), emitting from its
 // front side only, solid-angle density t^2 / (cos A).
 bool sample_light_triangle(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {
-  vec3 c = cross(s.b - s.a, s.c - s.a);
+  TriangleRec k = triangle_rec(s);
+  vec3 c = cross(k.v1 - k.v0, k.v2 - k.v0);
   float area = 0.5 * length(c);
   vec3 n = c / (2.0 * area);
   pdf = 0.0;
   dist = 0.0;
-  if (dot(n, p - s.a) <= 0.0) return false;  // p sees the back side
+  if (dot(n, p - k.v0) <= 0.0) return false;  // p sees the back side
   float r = sqrt(u.x);
-  vec3 q = s.a * (1.0 - r) + s.b * (r * (1.0 - u.y)) + s.c * (r * u.y);
+  vec3 q = k.v0 * (1.0 - r) + k.v1 * (r * (1.0 - u.y)) + k.v2 * (r * u.y);
   vec3 d = q - p;
   float t2 = dot(d, d);
   wi = d * inversesqrt(t2);
@@ -97,7 +99,8 @@ bool sample_light_triangle(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pd
 }
 
 float pdf_light_triangle(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
-  float area = 0.5 * length(cross(s.b - s.a, s.c - s.a));
+  TriangleRec k = triangle_rec(s);
+  float area = 0.5 * length(cross(k.v1 - k.v0, k.v2 - k.v0));
   float cos_l = abs(dot(n, wi));
   return cos_l > 0.0 ? t * t / (cos_l * area) : 0.0;
 }
@@ -108,7 +111,8 @@ float pdf_light_triangle(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
 // UvRec (core/records.h), interpolated with the barycentric weights of p.
 // barycentric_triangle is the hook for meshes: a mesh hit carries its weights and skips it.
 vec3 barycentric_triangle(ShapeRec s, vec3 p) {
-  vec3 e1 = s.b - s.a, e2 = s.c - s.a, q = p - s.a;
+  TriangleRec k = triangle_rec(s);
+  vec3 e1 = k.v1 - k.v0, e2 = k.v2 - k.v0, q = p - k.v0;
   float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2), d20 = dot(q, e1), d21 = dot(q, e2);
   float den = d00 * d11 - d01 * d01;
   float v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
@@ -122,7 +126,8 @@ vec2 uv_triangle(ShapeRec s, UvRec t, vec3 p, vec3 n) {
 // for dp/du, made orthogonal to n. w = -1 when the uv map is mirrored (then dp/dv points
 // along -(n x t)); a degenerate uv map gives any tangent.
 vec4 tangent_triangle(ShapeRec s, UvRec t, vec3 p, vec3 n) {
-  vec3 e1 = s.b - s.a, e2 = s.c - s.a;
+  TriangleRec k = triangle_rec(s);
+  vec3 e1 = k.v1 - k.v0, e2 = k.v2 - k.v0;
   vec2 d1 = t.uv1 - t.uv0, d2 = t.uv2 - t.uv0;
   float det = d1.x * d2.y - d1.y * d2.x;
   vec3 dpdu = (e1 * d2.y - e2 * d1.y) * (det < 0.0 ? -1.0 : 1.0);

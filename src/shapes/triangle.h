@@ -1,7 +1,7 @@
 // Triangle: <Triangle v0="x y z" v1=".." v2=".." [uv0="u v" uv1=".." uv2=".."]>: one
 // triangle (its vertices' texture coordinates, an extension, are read by <Textured>; they
-// live in the uv records, core/records.h). Record: a, b, c = v0, v1, v2; in the BVH it
-// is a triangle primitive with its vertices inline. Intersection watertight (Woop et al.
+// live in the uv records, core/records.h). Its record holds v0, v1, v2 (light sampling
+// reads them); in the BVH it is a triangle primitive with its vertices inline. Intersection watertight (Woop et al.
 // 2013, "Watertight Ray/Triangle Intersection", JCGT 2(1)) with the canonical edge order
 // that makes shared edges exact (triangle.glsl); the CPU twins below are the same
 // arithmetic.
@@ -53,6 +53,9 @@ struct Triangle {
   glm::vec3 v0{0.0f}, v1{1.0f, 0.0f, 0.0f}, v2{0.0f, 1.0f, 0.0f};
   glm::vec2 uv0{0.0f, 0.0f}, uv1{1.0f, 0.0f}, uv2{0.0f, 1.0f};
 
+#define PT_TRIANGLE_FIELDS(F) F(vec3, v0) F(vec3, v1) F(vec3, v2)
+  PT_KIND_RECORD(PT_TRIANGLE_FIELDS, PT_NO_FIELDS)
+
   void parse(XmlAttrs& a) {
     v0 = a.vec3("v0");
     v1 = a.vec3("v1");
@@ -62,7 +65,13 @@ struct Triangle {
     if (a.has("uv2")) uv2 = a.vec2("uv2");
     if (!(glm::length(glm::cross(v1 - v0, v2 - v0)) > 0.0f)) a.fail("triangle has zero area");
   }
-  ShapeRecord record() const { return {v0, v1, v2, 0.0f}; }
+  void pack(ShapeWriter& w) const {
+    w.set(rec::v0, v0);
+    w.set(rec::v1, v1);
+    w.set(rec::v2, v2);
+  }
+  // Its primitive in the BVH (BvhRole::Triangles): the vertices, inline.
+  void vertices(glm::vec3 v[3]) const { v[0] = v0, v[1] = v1, v[2] = v2; }
   ShapeBounds bounds(const ShapeContext&) const {
     ShapeBounds b;
     for (const glm::vec3& q : {v0, v1, v2}) b.grow(q);
