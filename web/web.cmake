@@ -7,6 +7,8 @@ add_executable(pathtracer_web
   "${CMAKE_SOURCE_DIR}/src/app/env_panel.cpp"
   "${CMAKE_SOURCE_DIR}/src/app/app_interaction.cpp"
   "${CMAKE_SOURCE_DIR}/src/platform/web.cpp"
+  "${CMAKE_SOURCE_DIR}/src/platform/web_context.cpp"  # the WebGL context: renderer name, loss, extensions
+  "${CMAKE_SOURCE_DIR}/src/platform/web_imgui.cpp"
   "${CMAKE_SOURCE_DIR}/src/platform/web_hooks.cpp")  # the functions the page calls (PT_EXPORTS below)
 set_target_properties(pathtracer_web PROPERTIES OUTPUT_NAME pathtracer SUFFIX ".js")
 target_link_libraries(pathtracer_web PRIVATE pt_core pt_imgui)

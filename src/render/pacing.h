@@ -39,6 +39,26 @@ class DrawPacer {
 // while frames are fast and scale down when one is slow; when even one draw per frame
 // keeps frames slow, the draw itself shrinks (rows, then columns), and it grows back while
 // frames are fast. Rules and figures in pacing.cpp.
+// While the page prepares a scene in slices between frames (App::work), whether to draw
+// this animation frame: only once the preparation has had kPrepareShare times the time
+// the last drawn frame took. With a software GPU a frame costs the page's thread tens of
+// milliseconds, which would otherwise leave the preparation a small share of it (2 gave
+// about 1.6x the preparation's own time from request to swap with SwiftShader, 4 about
+// 1.3-1.5x; docs/benchmarks.md). With a fast GPU every frame is still drawn.
+class PreparePacer {
+ public:
+  static constexpr double kSliceMs = 8.0;  // one slice of scene preparation between frames
+  static constexpr double kPrepareShare = 4.0;
+  bool draw_now(bool preparing, double now_ms) const { return !preparing || now_ms - last_end_ms_ >= kPrepareShare * last_ms_; }
+  void drawn(double start_ms, double end_ms) {
+    last_end_ms_ = end_ms;
+    last_ms_ = end_ms - start_ms;
+  }
+
+ private:
+  double last_end_ms_ = 0.0, last_ms_ = 0.0;
+};
+
 class FramePacer {
  public:
   // Rows of the first draws, before any frame was measured: the first frame of a heavy

@@ -143,3 +143,13 @@ TEST_CASE("FramePacer counts each draw's samples in fractions of the image", "[g
   CHECK(r.converged());
   CHECK(p.frame(r, s, 0.0, now, false, samples) == 0);  // converged: no draw
 }
+
+TEST_CASE("PreparePacer draws during a preparation only after 4x the last frame's time", "[pacing]") {
+  PreparePacer p;
+  CHECK(p.draw_now(true, 0.0));  // nothing drawn yet
+  p.drawn(100.0, 130.0);         // a frame of 30 ms ended at 130 ms
+  CHECK(p.draw_now(false, 131.0));  // no preparation: every frame is drawn
+  CHECK_FALSE(p.draw_now(true, 131.0));
+  CHECK_FALSE(p.draw_now(true, 130.0 + 4 * 30.0 - 1.0));
+  CHECK(p.draw_now(true, 130.0 + 4 * 30.0));
+}

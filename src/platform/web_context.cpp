@@ -1,0 +1,44 @@
+#include "platform/web_context.h"
+
+#include <cstdlib>
+
+#include <emscripten.h>
+
+// Returns a malloc'ed string.
+EM_JS(char*, pt_js_gl_renderer, (), {
+  const gl = Module.ctx;
+  const info = gl.getExtension("WEBGL_debug_renderer_info");
+  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  const size = lengthBytesUTF8(name) + 1;
+  const ptr = _malloc(size);
+  stringToUTF8(name, ptr, size);
+  return ptr;
+});
+
+EM_JS(int, pt_js_context_state, (), { return Module.ptContextState | 0; });
+EM_JS(void, pt_js_context_rebuilt, (), { Module.ptContextState = 0; });
+
+// KHR_parallel_shader_compile lets the driver compile in the background (gpu/program.cpp
+// polls it); the timer query times draws where the browser allows it.
+EM_JS(void, pt_js_enable_extensions, (), {
+  const gl = Module.ctx;
+  for (const name of ["EXT_color_buffer_float", "EXT_color_buffer_half_float", "EXT_float_blend",
+                      "OES_texture_float_linear", "KHR_parallel_shader_compile", "WEBGL_debug_renderer_info",
+                      "EXT_disjoint_timer_query_webgl2"])
+    gl.getExtension(name);
+});
+
+namespace pt::web {
+
+std::string gl_renderer() {
+  char* name = pt_js_gl_renderer();
+  std::string out = name ? name : "";
+  std::free(name);
+  return out;
+}
+
+ContextState context_state() { return ContextState(pt_js_context_state()); }
+void context_rebuilt() { pt_js_context_rebuilt(); }
+void enable_extensions() { pt_js_enable_extensions(); }
+
+}  // namespace pt::web

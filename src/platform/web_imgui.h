@@ -1,0 +1,16 @@
+// Dear ImGui on the page (web_imgui.cpp): its GLFW and OpenGL 3 (WebGL 2) backends, the
+// style and font scaled by the device pixel ratio, and one frame's begin and end.
+#pragma once
+
+struct GLFWwindow;
+
+namespace pt::web {
+
+void imgui_init(GLFWwindow* window);
+// The backend's GL objects belong to a context: made again on a restored one.
+void imgui_context_restored();
+// Starts an ImGui frame for a drawing buffer of w x h device pixels.
+void imgui_begin(int w, int h);
+void imgui_end();  // renders the frame's draw lists
+
+}  // namespace pt::web
