@@ -6,6 +6,8 @@
 // kChi2Tests tests. Incident directions include grazing ones (cos theta = 1e-3).
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -25,7 +27,7 @@ namespace {
 
 constexpr int kSamples = 1000000;
 constexpr int kCosBins = 40, kPhiBins = 80, kSub = 5;
-constexpr int kChi2Tests = 29 + 2 * kNumMaterialKinds;  // every direction_chi2 call below (at most)
+constexpr int kChi2Tests = 30 + 2 * kNumMaterialKinds;  // every direction_chi2 call below (at most)
 constexpr double kPi = 3.14159265358979323846;
 
 struct DirectionCase {
@@ -225,13 +227,14 @@ TEST_CASE("chi-square: every material kind's example that samples a lobe of its 
   CHECK(tested >= 3);  // Diffuse, Metal, PhongSpecular today
 }
 
-TEST_CASE("chi-square: light sampling of spheres, boxes and triangles", "[gpu][sampling]") {
+TEST_CASE("chi-square: light sampling of spheres, boxes, disks and triangles", "[gpu][sampling]") {
   // The density of a direction is only defined where the ray meets the light: the
   // density kernel intersects the shape to find the distance and normal there.
   const std::string density_helper =
       "float light_density(vec3 d) {\n  Hit h = no_hit();\n  ShapeRec s = make_light();\n"
       "  Ray r = Ray(P, d);\n  if (s.kind == SHAPE_SPHERE) intersect_sphere(s, 0, r, h);\n"
       "  if (s.kind == SHAPE_BOX) intersect_box(s, 0, r, prepare_box(r), h);\n  if (s.kind == SHAPE_TRIANGLE) intersect_triangle(s, 0, r, prepare_triangle(r), h);\n"
+      "  if (s.kind == SHAPE_DISK) intersect_disk(s, 0, r, h);\n"
       "  if (h.id < 0 || dot(h.n, d) >= 0.0) return 0.0;\n  return light_pdf_shape(s, P, d, h.t, h.n);\n}\n";
   const char* sample = "  float pdf, dist;\n  ok = light_sample_shape(make_light(), P, vec2(rand01(), rand01()), wi, pdf, dist) && pdf > 0.0;";
   struct C {
@@ -243,6 +246,7 @@ TEST_CASE("chi-square: light sampling of spheres, boxes and triangles", "[gpu][s
                      C{"box light (one face visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-1.0, -1.0, 0.5), vec3(1.0, 1.0, 2.0)));"},
                      C{"box light (two faces visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-2.5, -1.0, 0.4), vec3(-0.4, 1.0, 2.0)));"},
                      C{"box light (three faces visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.3, 0.4, 0.5), vec3(2.0, 2.0, 2.0)));"},
+                     C{"disk light (tilted)", "s.kind = SHAPE_DISK; s = with_disk_rec(s, DiskRec(vec3(0.4, -0.3, 1.2), 0.9, normalize(vec3(-0.2, 0.3, -1.0))));"},
                      C{"triangle light", "s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(vec3(-1.0, -1.0, 1.0), vec3(0.0, 1.5, 1.0), vec3(1.0, -1.0, 0.6)));"}}) {
     const std::string setup = std::string("const vec3 P = vec3(0.0);\nShapeRec make_light() {\n  ShapeRec s;\n  s.material = 0; s.light = 0;\n  ") +
                               c.shape + "\n  return s;\n}\n" + density_helper;
@@ -294,4 +298,26 @@ TEST_CASE("chi-square: environment map importance sampling", "[gpu][sampling]") 
     const std::string name = "environment map, rotation " + std::to_string(rotation).substr(0, 3);
     CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
   }
+}
+
+TEST_CASE("the MIS weight stays in [0, 1] and sums to 1 at extreme densities", "[gpu][sampling][hard]") {
+  // A far point's density towards a small emitter, t^2 / (cos A), passes 1.8e19, whose
+  // square overflows: the weight was inf / inf (a NaN sample under a disk light over a plane
+  // seen to its horizon, 1 in 10^7 samples).
+  GlslKernel k("vec4 kernel(vec4 x, int i) { return vec4(power_heuristic(x.x, x.y), power_heuristic(x.y, x.x), 0.0, 0.0); }\n");
+  const float inf = std::numeric_limits<float>::infinity();
+  const std::vector<glm::vec4> in = {{1e20f, 1.0f, 0, 0}, {1e20f, 3e19f, 0, 0}, {3e38f, 3e38f, 0, 0}, {inf, 1.0f, 0, 0},
+                                     {inf, inf, 0, 0},     {1e-30f, 1e-30f, 0, 0}, {2.0f, 1.0f, 0, 0}, {0.0f, 1.0f, 0, 0}};
+  const std::vector<glm::vec4> out = k.run(in);
+  for (size_t i = 0; i < in.size(); ++i) {
+    INFO("pdf_a " << in[i].x << ", pdf_b " << in[i].y << ": " << out[i].x << " " << out[i].y);
+    CHECK(std::isfinite(out[i].x));
+    CHECK(out[i].x >= 0.0f);
+    CHECK(out[i].x <= 1.0f);
+    if (in[i].x > 0.0f && in[i].y > 0.0f) CHECK(std::abs(out[i].x + out[i].y - 1.0f) <= 1e-6f);
+  }
+  CHECK(out[0].x == 1.0f);
+  CHECK(std::abs(out[1].x - 1.0f / (1.0f + 0.09f)) <= 1e-6f);
+  CHECK(std::abs(out[6].x - 0.8f) <= 1e-6f);
+  CHECK(out[7].x == 0.0f);
 }

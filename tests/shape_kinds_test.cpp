@@ -187,7 +187,8 @@ TEST_CASE("the panel's shape fields come from the kind's stem", "[shapes]") {
     Recorder r;
     CHECK_FALSE(edit_shape(s, 0, r));
     INFO(kShapeKinds[kind].xml);
-    CHECK(r.labels == (ShapeKind(kind) == ShapeKind::Sphere ? std::vector<std::string>{"radius"} : std::vector<std::string>{}));
+    const bool has_radius = ShapeKind(kind) == ShapeKind::Sphere || ShapeKind(kind) == ShapeKind::Disk;
+    CHECK(r.labels == (has_radius ? std::vector<std::string>{"radius"} : std::vector<std::string>{}));
   }
   // A light's sphere: the radius reaches its Light; a radius <= 0 is refused.
   Scene s = load_scene_text("<SceneLevel><Camera position=\"0 0 5\"/><Light position=\"1 2 3\" radius=\"0.5\"/></SceneLevel>", "x.xml");

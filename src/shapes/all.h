@@ -14,6 +14,7 @@
 #include "shapes/plane.h"
 #include "shapes/triangle.h"
 #include "shapes/mesh.h"
+#include "shapes/disk.h"
 
 namespace pt {
 

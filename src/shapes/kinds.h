@@ -23,7 +23,8 @@
   X(Box, box, "Box", true, true, Analytic)                    \
   X(Plane, plane, "Plane", false, false, Unbounded)           \
   X(Triangle, triangle, "Triangle", true, true, Triangles)    \
-  X(Mesh, mesh, "Mesh", false, false, Instanced)
+  X(Mesh, mesh, "Mesh", false, false, Instanced)              \
+  X(Disk, disk, "Disk", true, false, Analytic)
 
 namespace pt {
 
