@@ -12,7 +12,7 @@ void intersect_plane(ShapeRec s, int id, Ray r, inout Hit h) {
   h.p -= s.a * (dot(s.a, h.p) - s.radius);
 }
 
-#ifdef HAS_MAT_TEXTURED
+#ifdef HAS_IMAGE_MAPS
 // Image maps: planar in the plane's tangent frame frame_from(normal), in scene units
 // (the material's uvScale sets the tile size): uv = (dot(p, t), dot(p, b)). For the floor
 // (normal +y) t = +x and b = -z: u = x, v = -z.
