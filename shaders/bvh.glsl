@@ -29,6 +29,9 @@ int bvh_entry(NodeRec n) { return n.count == 0 ? n.first : -1 - (n.first * 16 + 
 void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
   PrimRec p = load_prim(i);
   float before = h.t;
+#ifdef HAS_HIT_CUTS
+  Hit kept = h;
+#endif
   if (p.tag >= 0) {
 #ifdef HAS_PRIM_TRIANGLES
     if (p.tag != skip) triangle_prim(p, r, pre.triangle, h);
@@ -36,6 +39,14 @@ void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
   } else if (-1 - p.tag != skip) {
     intersect_analytic(p, r, pre, h);
   }
+#ifdef HAS_HIT_CUTS
+  // A material may say the candidate is no surface (alpha, a culled back face: the
+  // generated hit_present, materials/material.h kCutsHits); the traversal goes on past it.
+  if (h.t < before && p.tag >= 0 && !hit_present(p.tag, i, r, h)) {
+    h = kept;
+    return;
+  }
+#endif
   if (h.t < before) h.prim = i;
 }
 

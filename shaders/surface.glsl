@@ -21,6 +21,7 @@ Surface surface_hit(Ray r, Hit h) {
   sf.entering = dot(r.d, h.n) < 0.0;
   sf.n = sf.entering ? h.n : -h.n;
   sf.emission = sf.entering ? sf.m.emission : vec3(0.0);
+  emission_hit(sf, r, h);  // a kind whose emission varies over the surface (kEmissionAtHit)
   sf.absorbs = false;
 #ifdef HAS_MAT_EMIT
   sf.absorbs = sf.m.kind == MAT_EMIT;

@@ -164,7 +164,7 @@ TEST_CASE("a glTF base-colour texture renders with its colours where its uv put 
         "<Mesh src=\"../assets/models/" + std::string(file) + "\"/></Objects></SceneLevel>",
         repo_path("scenes/textured-quad-test.xml"));
     REQUIRE(s.materials.size() == 1);
-    CHECK(s.materials[0].kind() == MaterialKind::Textured);
+    CHECK(s.materials[0].kind() == MaterialKind::GltfPbr);
     if (std::string(file) == "textured-quad.gltf") CHECK(s.files.back() == repo_path("scenes/../assets/models/textured-quad.png"));
     const int n = 32;
     const RenderResult r = render_scene(s, n, n, 16);
@@ -187,8 +187,10 @@ TEST_CASE("a glTF base-colour texture renders with its colours where its uv put 
       const glm::dvec3 m = mean(q.x, q.y);
       std::printf("%s, %-12s: %.4f %.4f %.4f (texture %.0f %.0f %.0f)\n", file, q.name, m.x, m.y, m.z, q.rgb.x, q.rgb.y, q.rgb.z);
       INFO(q.name);
-      // Every path is one bounce to the sky with weight = albedo: no noise beyond float rounding.
-      CHECK(glm::all(glm::lessThan(glm::abs(m - q.rgb), glm::dvec3(1e-3))));
+      // The glTF BSDF (a rough dielectric, ior 1.5, of the map's base colour: GltfPbr) is
+      // not a pure Lambert: its coat adds a few per cent of white and takes some of the
+      // base. Each quadrant still shows its texture's colour where its uv put it.
+      for (int c = 0; c < 3; ++c) CHECK((q.rgb[c] > 0.5 ? m[c] > 0.6 : m[c] < 0.15));
     }
   }
 }

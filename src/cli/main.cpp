@@ -38,6 +38,7 @@ int run_render(const Options& o) {
   const auto tl = std::chrono::steady_clock::now();
   const std::unique_ptr<ScenePipeline> pipe = read_scene(o);  // before GL: bad input fails fast
   const Scene& scene = pipe->scene();
+  for (const std::string& w : scene.warnings) std::fprintf(stderr, "pathtracer: warning: %s\n", w.c_str());
   const double load_ms = seconds_since(tl) * 1e3;
   HeadlessGl gl;
   std::printf("GL: %s\n", gl.description().c_str());

@@ -61,6 +61,7 @@ class KindWriter {
  public:
   KindWriter(RecordBuffer& b, int record, const KindField* fields, PayloadSlots slots)
       : b_(b), i_(record), fields_(fields), slots_(slots) {}
+  int record() const { return i_; }  // the record's index (a material's in the scene's list)
   // `field`: a kind's rec::<name>.
   template <class Field>
   void set(Field field, float v) { slot(int(field), 1, v); }

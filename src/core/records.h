@@ -53,10 +53,13 @@
   F(vec3, attr, 3, 0)
 
 // Per-vertex attributes of mesh instances (world space): shading normal (0 when the mesh
-// has none) and uv.
+// has none), uv (TEXCOORD_0), uv1 (glTF's TEXCOORD_1; uv when absent) and colour with
+// alpha (glTF's COLOR_0; 1 when absent). Four texels: a record's texel count divides the
+// row (three would straddle one); the fourth is free.
 #define PT_VERTEX_RECORD(F) \
   F(vec3, normal, 0, 0) F(float, u, 0, 3) \
-  F(float, v, 1, 0)
+  F(float, v, 1, 0) F(float, u1, 1, 1) F(float, v1, 1, 2) F(float, alpha, 1, 3) \
+  F(vec3, color, 2, 0)
 
 // A light is an emissive shape of a samplable kind; its geometry stays in the shape record.
 #define PT_LIGHT_RECORD(F) \
@@ -97,7 +100,7 @@ struct RecordLayout {
   X(light, 1, PT_LIGHT_RECORD)        \
   X(node, 2, PT_NODE_RECORD)          \
   X(prim, 4, PT_PRIM_RECORD)          \
-  X(vertex, 2, PT_VERTEX_RECORD)      \
+  X(vertex, 4, PT_VERTEX_RECORD)      \
   X(uv, 2, PT_UV_RECORD)
 
 #define PT_RECORD_DECL(name, texels, fields) \

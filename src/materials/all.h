@@ -22,6 +22,7 @@
 #include "materials/formula_pow_texture.h"
 #include "materials/textured.h"
 #include "materials/metallic_roughness.h"
+#include "materials/gltf_pbr.h"
 
 namespace pt {
 
@@ -30,6 +31,14 @@ using MaterialParams = KindVariant<
     PT_MATERIAL_KINDS(PT_X)
 #undef PT_X
     ListEnd>;
+
+// The material features (materials/features.h) a material uses: its kind's features().
+inline unsigned material_features(const MaterialParams& p) {
+  return std::visit([](const auto& k) -> unsigned {
+    if constexpr (requires { k.features(); }) return k.features();
+    else return 0u;
+  }, p);
+}
 
 template <class K>
 constexpr bool hit_fields_last() {
@@ -50,10 +59,14 @@ struct MaterialTraits {
   bool resolves_at_hit;  // defines resolve_hit_<glsl>
   bool composite;        // defines choose_<glsl>
   bool has_children;     // its element wraps further elements
+  bool image_maps;       // reads the scene's image maps
+  bool emission_at_hit;  // defines emission_hit_<glsl>
+  bool cuts_hits;        // defines hit_present_<glsl>
 };
 
 inline constexpr MaterialTraits kMaterialTraits[] = {
-#define PT_X(e, g, x) {e::kExample, e::kFields, e::kNumFields, KindNeeds<e>::value, KindResolvesAtHit<e>::value, KindComposite<e>::value, KindHasChildren<e>::value},
+#define PT_X(e, g, x) {e::kExample, e::kFields, e::kNumFields, KindNeeds<e>::value, KindResolvesAtHit<e>::value, KindComposite<e>::value, KindHasChildren<e>::value, \
+   KindImageMaps<e>::value, KindEmissionAtHit<e>::value, KindCutsHits<e>::value},
     PT_MATERIAL_KINDS(PT_X)
 #undef PT_X
 };

@@ -27,7 +27,8 @@
   X(FormulaTexture, formula_texture, "FormulaTexture")       \
   X(FormulaPowTexture, formula_pow_texture, "FormulaPowTexture") \
   X(Textured, textured, "Textured")                          \
-  X(MetallicRoughness, metallic_roughness, "MetallicRoughness")
+  X(MetallicRoughness, metallic_roughness, "MetallicRoughness") \
+  X(GltfPbr, gltf_pbr, "GltfPbr")
 
 namespace pt {
 

@@ -11,8 +11,14 @@
 // elements, which its parse reads), kNeeds (other kinds whose GLSL
 // functions its own calls, so the generator includes their snippets and dispatch),
 // kResolvesAtHit (its GLSL defines resolve_hit_<glsl>(inout Surface, Ray, Hit): it turns
-// into what shades at the hit, e.g. a texture into a Diffuse record) and kComposite (it
-// defines choose_<glsl>: it picks one of its children, surface.glsl).
+// into what shades at the hit, e.g. a texture into a Diffuse record), kComposite (it
+// defines choose_<glsl>: it picks one of its children, surface.glsl), kImageMaps (it reads
+// the scene's image maps: the program gets the texture array and the shapes' surface uv),
+// kEmissionAtHit (it defines emission_hit_<glsl>(inout Surface, Ray, Hit): its emission
+// varies over the surface) and kCutsHits (it defines hit_present_<glsl>(MaterialRec,
+// int prim, Ray, Hit): whether a candidate hit on a mesh triangle is a surface at all,
+// asked by the traversal itself so that every ray, shadow rays too, sees the same
+// surface; compiled only under HAS_HIT_CUTS, materials/features.h).
 #pragma once
 #include <cstring>
 #include <initializer_list>
@@ -23,6 +29,7 @@
 #include "core/kind_record.h"
 #include "core/records.h"
 #include "core/xml_attrs.h"
+#include "materials/features.h"
 #include "materials/kinds.h"
 
 namespace tinyxml2 {
@@ -46,6 +53,8 @@ class MaterialLoader {
   // scene and decoding, resolved against the scene file's folder; its index in the
   // scene's image list. A file that cannot be read fails with its name and line.
   virtual int image_map(XmlAttrs& a, const char* attr, bool normal) = 0;
+  // The same for a map of linear values (no sRGB decoding: glTF's metallicRoughnessTexture).
+  virtual int image_map_linear(XmlAttrs& a, const char* attr) = 0;
   // FresnelComposites enclosing the element being parsed.
   virtual int composite_depth() const = 0;
 };
@@ -93,6 +102,18 @@ template <class K, class = void>
 struct KindHasChildren : std::false_type {};
 template <class K>
 struct KindHasChildren<K, std::void_t<decltype(K::kHasChildren)>> : std::bool_constant<K::kHasChildren> {};
+template <class K, class = void>
+struct KindImageMaps : std::false_type {};
+template <class K>
+struct KindImageMaps<K, std::void_t<decltype(K::kImageMaps)>> : std::bool_constant<K::kImageMaps> {};
+template <class K, class = void>
+struct KindEmissionAtHit : std::false_type {};
+template <class K>
+struct KindEmissionAtHit<K, std::void_t<decltype(K::kEmissionAtHit)>> : std::bool_constant<K::kEmissionAtHit> {};
+template <class K, class = void>
+struct KindCutsHits : std::false_type {};
+template <class K>
+struct KindCutsHits<K, std::void_t<decltype(K::kCutsHits)>> : std::bool_constant<K::kCutsHits> {};
 template <class K, class = void>
 struct KindComposite : std::false_type {};
 template <class K>

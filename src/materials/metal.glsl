@@ -4,39 +4,10 @@
 // glossiness 0 is a perfect mirror (a delta lobe). montecarlo picks the sampling strategy,
 // both exact: 1 = visible normals of GGX (Heitz 2018), 0 = cosine-weighted hemisphere.
 #include "fresnel.glsl"
+#include "ggx.glsl"
 
 bool delta_metal(MaterialRec m) { return metal_rec(m).roughness < 0.03; }  // alpha < 1e-3
 vec3 albedo_metal(MaterialRec m) { return m.tint; }
-
-float ggx_d(float nh, float a2) {
-  float d = nh * nh * (a2 - 1.0) + 1.0;
-  return a2 / (PI * d * d);
-}
-float ggx_lambda_term(float c, float a2) { return sqrt(a2 + (1.0 - a2) * c * c); }
-float ggx_g1(float c, float a2) { return 2.0 * c / (c + ggx_lambda_term(c, a2)); }
-float ggx_g2(float co, float ci, float a2) {
-  return 2.0 * co * ci / (co * ggx_lambda_term(ci, a2) + ci * ggx_lambda_term(co, a2));
-}
-
-// Density of GGX visible-normal sampling, as a density of wi.
-float pdf_ggx_vndf(vec3 wo, vec3 hm, float a2) {
-  return ggx_g1(wo.z, a2) * ggx_d(hm.z, a2) / (4.0 * wo.z);
-}
-
-vec3 sample_ggx_vndf(vec3 wo, float alpha, vec2 u) {
-  vec3 vh = normalize(vec3(alpha * wo.x, alpha * wo.y, wo.z));
-  float lensq = vh.x * vh.x + vh.y * vh.y;
-  vec3 t1 = lensq > 0.0 ? vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq) : vec3(1.0, 0.0, 0.0);
-  vec3 t2 = cross(vh, t1);
-  float r = sqrt(u.x);
-  float phi = TWO_PI * u.y;
-  float p1 = r * cos(phi);
-  float p2 = r * sin(phi);
-  float s = 0.5 * (1.0 + vh.z);
-  p2 = (1.0 - s) * sqrt(max(0.0, 1.0 - p1 * p1)) + s * p2;
-  vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
-  return normalize(vec3(alpha * nh.x, alpha * nh.y, max(1e-6, nh.z)));
-}
 
 vec3 eval_metal(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;

@@ -2,13 +2,14 @@
 // XML: metallic_roughness.h). With s5 = (1 - v.h)^5, F_d = f0 + (1 - f0) s5 (dielectric)
 // and F_m = tint + (1 - tint) s5 (metal, f0 = the base colour):
 //     f = (1 - metallic) [(1 - F_d) tint / pi + F_d f_s] + metallic F_m f_s,
-//     f_s = D G2 / (4 |n.l| |n.v|)   (GGX, height-correlated Smith: metal.glsl)
+//     f_s = D G2 / (4 |n.l| |n.v|)   (GGX, height-correlated Smith: ggx.glsl)
 // Sampling picks the specular lobe (GGX visible normals, Heitz 2018) with probability p_s
 // from the lobes' Fresnel-weighted albedos at wo (clamped to [0.1, 0.9] when both lobes
 // carry light, so neither is starved), else the cosine-weighted diffuse lobe; the pdf is
 // the mixture's (one-sample MIS, as pbrt's BSDFs do). Below roughness 0.03 the specular
 // lobe is a mirror chosen with p_s, weight F / p_s; the material is a delta one only when
 // it is also fully metallic.
+#include "ggx.glsl"
 bool delta_metallic_roughness(MaterialRec m) {
   MetallicRoughnessRec q = metallic_roughness_rec(m);
   return q.roughness < 0.03 && q.metallic >= 1.0;

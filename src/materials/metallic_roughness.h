@@ -24,7 +24,6 @@ struct MetallicRoughness {
 
 #define PT_METALLIC_ROUGHNESS_FIELDS(F) F(float, metallic) F(float, roughness) F(float, f0)
   PT_KIND_RECORD(PT_METALLIC_ROUGHNESS_FIELDS, PT_NO_FIELDS)
-  static constexpr unsigned kNeeds = kind_bit(MaterialKind::Metal);  // GGX (metal.glsl)
 
   void parse(MaterialParse& p) {
     XmlAttrs& a = p.attrs;

@@ -16,7 +16,7 @@
 // their layer numbers. resolve_hit_textured (textured_resolve.glsl) replaces the record by
 // its values at the hit: tint = (1 - s) rho and the hit field spec = s; the functions
 // below read that.
-uniform highp sampler2DArray u_maps;
+#include "image_maps.glsl"
 
 // Bilinear, wrap = repeat (the texture's own state); fract keeps the coordinates small
 // where the hardware's sub-texel precision is (uv of a plane grows with distance).

@@ -28,6 +28,7 @@ struct Textured {
   PT_KIND_RECORD(PT_TEXTURED_FIELDS, PT_TEXTURED_HIT_FIELDS)
   static constexpr unsigned kNeeds = kind_bit(MaterialKind::Diffuse) | kind_bit(MaterialKind::PhongSpecular);  // its lobes
   static constexpr bool kResolvesAtHit = true;
+  static constexpr bool kImageMaps = true;
 
   void parse(MaterialParse& p) {
     XmlAttrs& a = p.attrs;

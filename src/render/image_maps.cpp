@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "materials/gltf_map.h"
 
 namespace pt {
 
@@ -62,6 +63,19 @@ MapArray build_map_array(const Scene& scene, int max_size, int max_layers) {
     a.texels.insert(a.texels.end(), layer.begin(), layer.end());
   }
   return a;
+}
+
+RecordBuffer pack_texinfos(const Scene& scene) {
+  RecordBuffer b(texinfo_rec::kTexels);
+  for (const Material& m : scene.materials) {
+    const int first = b.count();
+    for (int k = 0; k < kTexinfosPerMaterial; ++k) b.set(b.add(), texinfo_rec::code, -1.0f);
+    std::visit([&](const auto& k) {
+      if constexpr (requires { k.pack_texinfos(b, first); }) k.pack_texinfos(b, first);
+    }, m.params);
+  }
+  if (b.count() == 0) b.set(b.add(), texinfo_rec::code, -1.0f);
+  return b;
 }
 
 RecordBuffer pack_uvs(const Scene& scene) {

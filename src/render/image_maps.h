@@ -37,5 +37,8 @@ std::vector<float> resample_repeat(const ImageMap& src, int width, int height);
 
 // One uv record per shape (Triangle vertex uv; zero for other kinds).
 RecordBuffer pack_uvs(const Scene& scene);
+// The maps' texinfo records (materials/gltf_map.h): kTexinfosPerMaterial per material, in
+// material order, written by the kinds that have them (pack_texinfos), else "no map".
+RecordBuffer pack_texinfos(const Scene& scene);
 
 }  // namespace pt

@@ -108,7 +108,7 @@ PackJob::PackJob(const Scene& scene) : scene_(scene), vertex_base_(scene.shapes.
       continue;
     }
     const MeshData& m = *scene.meshes[size_t(s.as<Mesh>()->mesh)];
-    const bool attributes = !m.normals.empty() || !m.uvs.empty();
+    const bool attributes = !m.normals.empty() || !m.uvs.empty() || !m.uvs1.empty() || !m.colors.empty();
     box_work_ += long(m.positions.size()) * (attributes ? 2 : 1) + long(m.triangles.size());
     prims += m.triangles.size();
   }
@@ -240,8 +240,8 @@ void PackJob::boxes_step(long& work) {
       return end;
     };
     if (pass_ == 0) {
-      if (!m.normals.empty() || !m.uvs.empty()) {
-        // World-space shading normals (inverse transpose) and uv, one record per vertex.
+      if (!m.normals.empty() || !m.uvs.empty() || !m.uvs1.empty() || !m.colors.empty()) {
+        // World-space shading normals (inverse transpose), uv, uv1 and colour, one record per vertex.
         if (at_ == 0) {
           vertex_base_[shape_] = p_.vertices.count();
           p_.vertices.reserve(p_.vertices.count() + int(m.positions.size()));
@@ -258,6 +258,12 @@ void PackJob::boxes_step(long& work) {
             p_.vertices.set(k, vertex_rec::u, m.uvs[at_].x);
             p_.vertices.set(k, vertex_rec::v, m.uvs[at_].y);
           }
+          const glm::vec2 uv1 = !m.uvs1.empty() ? m.uvs1[at_] : !m.uvs.empty() ? m.uvs[at_] : glm::vec2(0.0f);
+          p_.vertices.set(k, vertex_rec::u1, uv1.x);
+          p_.vertices.set(k, vertex_rec::v1, uv1.y);
+          const glm::vec4 c = m.colors.empty() ? glm::vec4(1.0f) : m.colors[at_];
+          p_.vertices.set(k, vertex_rec::color, glm::vec3(c));
+          p_.vertices.set(k, vertex_rec::alpha, c.w);
         }
         if (at_ < m.positions.size()) return;
       }

@@ -78,7 +78,7 @@ void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* 
   const Features old = features_;
   features_ = Features::of(scene);
   // Image maps first: a scene beyond this GPU's texture limits throws before anything changes.
-  const bool textured = features_.has(MaterialKind::Textured);
+  const bool textured = features_.image_maps();
   MapArray maps;
   const RenderSettings old_settings = settings_;
   try {

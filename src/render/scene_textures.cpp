@@ -49,9 +49,11 @@ void SceneTextures::set(const Scene& scene, const PackedScene& p, StagedScene& s
   if (maps) {
     maps_ = TextureArray(maps->width, maps->height, maps->layers, maps->texels.data());
     uv_tex_ = upload(pack_uvs(scene));
+    texinfo_tex_ = upload(pack_texinfos(scene));
   } else {
     maps_ = TextureArray();
     uv_tex_ = Texture();
+    texinfo_tex_ = Texture();
   }
   num_lights_ = p.lights.count();
   num_shapes_ = p.shapes.count();
@@ -130,8 +132,10 @@ void SceneTextures::bind(Program& p, RenderMode mode) const {
   if (maps_.id()) {
     maps_.bind(kMapsUnit);
     uv_tex_.bind(kUvUnit);
+    texinfo_tex_.bind(kTexinfoUnit);
     p.set("u_maps", int(kMapsUnit));
     p.set("u_uv_data", int(kUvUnit));
+    p.set("u_texinfo_data", int(kTexinfoUnit));
   }
   shape_tex_.bind(kShapeUnit);
   material_tex_.bind(kMaterialUnit);

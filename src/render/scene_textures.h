@@ -51,6 +51,7 @@ class SceneTextures {
   Texture node_tex_, prim_tex_, vertex_tex_;  // the BVH, its primitives, mesh vertex attributes
   TextureArray maps_;  // Textured scenes: the image maps (render/image_maps.h)
   Texture uv_tex_;     // and the Triangle uv records
+  Texture texinfo_tex_;  // and the maps' texinfo records (GltfPbr: materials/gltf_map.h)
   int num_lights_ = 0, num_unbounded_ = 0, num_nodes_ = 0, num_shapes_ = 0, num_prims_ = 0;
   std::vector<int> light_shapes_;  // the shape of each light record (update_values keeps them)
   float motion_bound_ = 1.0f;

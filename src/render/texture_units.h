@@ -6,8 +6,8 @@ namespace pt {
 
 enum TextureUnit {
   kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3, kStatsUnit = 4, kEnvUnit = 5, kEnvCdfUnit = 6,
-  kNodeUnit = 7, kPrimUnit = 8, kVertexUnit = 9, kMapsUnit = 10, kUvUnit = 11,
-  kNumTextureUnits = 12
+  kNodeUnit = 7, kPrimUnit = 8, kVertexUnit = 9, kMapsUnit = 10, kUvUnit = 11, kTexinfoUnit = 12,
+  kNumTextureUnits = 13
 };
 
 }  // namespace pt

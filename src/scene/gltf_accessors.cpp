@@ -46,6 +46,7 @@ Resumable Reader::floats(int index, std::string user, std::vector<T>& out) const
 // The types the mesh reads (MeshData's positions and normals, uvs).
 template Resumable Reader::floats<glm::vec2>(int, std::string, std::vector<glm::vec2>&) const;
 template Resumable Reader::floats<glm::vec3>(int, std::string, std::vector<glm::vec3>&) const;
+template Resumable Reader::floats<glm::vec4>(int, std::string, std::vector<glm::vec4>&) const;  // COLOR_0
 
 Resumable Reader::indices(int index, std::string user, std::vector<uint32_t>& out) const {
   const tinygltf::Accessor& a = accessor(index, user);

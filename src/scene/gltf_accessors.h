@@ -25,7 +25,7 @@ class Reader {
   // An accessor's elements as floats (normalised integers mapped to [0, 1]), with every
   // offset and size checked against its buffer.
   // Resumable (a unit: one element); `out` must outlive it.
-  // T: glm::vec2 or glm::vec3, the accessor's type (VEC2, VEC3); read into `out` directly.
+  // T: glm::vec2, vec3 or vec4, the accessor's type (VEC2, VEC3, VEC4); read into `out` directly.
   template <typename T>
   Resumable floats(int index, std::string user, std::vector<T>& out) const;
 

@@ -3,6 +3,8 @@
 // data: URI or a file through the resolver, decoded by our own image reader.
 #include "scene/gltf_materials.h"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "core/file_io.h"
@@ -61,19 +63,76 @@ GltfMaterial Materials::read(int index) {
     g.transmission = unit(t->second.Get("transmissionFactor").GetNumberAsDouble(), "transmissionFactor");
   if (auto t = m.extensions.find("KHR_materials_ior"); t != m.extensions.end() && t->second.Has("ior")) {
     const double ior = t->second.Get("ior").GetNumberAsDouble();
-    if (!(ior >= 1.0 && ior <= 10.0)) r_.fail(at, "ior must be in [1, 10]");
+    // The extension's range: ior >= 1, or exactly 0 (the Fresnel term is 1 at every angle,
+    // for the specular-glossiness workflow: f0 = ((0 - 1) / (0 + 1))^2 = 1 gives that).
+    if (!(ior == 0.0 || (ior >= 1.0 && ior <= 100.0))) r_.fail(at + "/extensions/KHR_materials_ior", "ior must be 0 or in [1, 100]");
     g.ior = float(ior);
   }
-  g.base_color_map = map(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, at + "/pbrMetallicRoughness/baseColorTexture");
-  g.metallic_roughness_map = map(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                                 at + "/pbrMetallicRoughness/metallicRoughnessTexture");
-  g.normal_map = map(m.normalTexture.index, m.normalTexture.texCoord, at + "/normalTexture");
+  if (pbr.baseColorFactor.size() == 4) g.alpha = unit(pbr.baseColorFactor[3], "baseColorFactor");
+  if (m.alphaMode == "MASK") g.alpha_mode = 1;
+  else if (m.alphaMode == "BLEND") g.alpha_mode = 2;
+  else if (!m.alphaMode.empty() && m.alphaMode != "OPAQUE") r_.fail(at + "/alphaMode", "must be OPAQUE, MASK or BLEND");
+  if (!(m.alphaCutoff >= 0.0)) r_.fail(at + "/alphaCutoff", "must be >= 0");
+  g.alpha_cutoff = float(std::min(m.alphaCutoff, 1.0));  // above 1 nothing passes, as at 1 (alpha <= 1)
+  g.double_sided = m.doubleSided;
+  g.base_color_map = info(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions,
+                          at + "/pbrMetallicRoughness/baseColorTexture");
+  g.metallic_roughness_map = info(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                  pbr.metallicRoughnessTexture.extensions, at + "/pbrMetallicRoughness/metallicRoughnessTexture");
+  g.normal_map = info(m.normalTexture.index, m.normalTexture.texCoord, m.normalTexture.extensions, at + "/normalTexture");
+  if (g.normal_map) {
+    if (!(std::abs(m.normalTexture.scale) <= 100.0)) r_.fail(at + "/normalTexture/scale", "must be in [-100, 100]");
+    g.normal_map.strength = float(m.normalTexture.scale);
+  }
+  g.emissive_map = info(m.emissiveTexture.index, m.emissiveTexture.texCoord, m.emissiveTexture.extensions, at + "/emissiveTexture");
+  // Read (it must be valid) and not used: a path tracer computes the occlusion (docs/gltf.md).
+  g.occlusion_map = info(m.occlusionTexture.index, m.occlusionTexture.texCoord, m.occlusionTexture.extensions, at + "/occlusionTexture");
   return g;
 }
 
-std::shared_ptr<const GltfImage> Materials::map(int texture, int tex_coord, const std::string& at) {
+GltfTexture Materials::info(int texture, int tex_coord, const tinygltf::ExtensionMap& ext, const std::string& at) {
+  GltfTexture t;
+  if (texture < 0) return t;
+  t.image = map(texture, at);
+  t.tex_coord = tex_coord;
+  if (auto x = ext.find("KHR_texture_transform"); x != ext.end()) {
+    const tinygltf::Value& v = x->second;
+    const std::string xat = at + "/extensions/KHR_texture_transform";
+    auto number = [&](const tinygltf::Value& n, const char* what) {
+      if (!n.IsNumber() || !(std::abs(n.GetNumberAsDouble()) <= 1e6)) r_.fail(xat, std::string(what) + " must be a number of magnitude <= 1e6");
+      return float(n.GetNumberAsDouble());
+    };
+    auto pair = [&](const char* name, glm::vec2 fallback) {
+      if (!v.Has(name)) return fallback;
+      const tinygltf::Value& p = v.Get(name);
+      if (!p.IsArray() || p.ArrayLen() != 2) r_.fail(xat, std::string(name) + " must be an array of 2 numbers");
+      return glm::vec2(number(p.Get(0), name), number(p.Get(1), name));
+    };
+    t.offset = pair("offset", glm::vec2(0.0f));
+    t.scale = pair("scale", glm::vec2(1.0f));
+    if (v.Has("rotation")) t.rotation = number(v.Get("rotation"), "rotation");
+    if (v.Has("texCoord")) t.tex_coord = int(number(v.Get("texCoord"), "texCoord"));
+  }
+  if (t.tex_coord != 0 && t.tex_coord != 1) r_.fail(at, "texCoord " + std::to_string(t.tex_coord) + " is not supported (TEXCOORD_0 and _1 are)");
+  const int sampler = m_.textures[size_t(texture)].sampler;
+  if (sampler >= 0) {
+    if (size_t(sampler) >= m_.samplers.size()) r_.fail(pointer("textures", size_t(texture)), "no sampler " + std::to_string(sampler));
+    const tinygltf::Sampler& s = m_.samplers[size_t(sampler)];
+    auto wrap = [&](int mode, const char* what) {
+      if (mode == TINYGLTF_TEXTURE_WRAP_REPEAT) return 0;
+      if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return 1;
+      if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return 2;
+      r_.fail(pointer("samplers", size_t(sampler)), std::string(what) + " " + std::to_string(mode) + " is not a wrap mode");
+    };
+    t.wrap_s = wrap(s.wrapS, "wrapS");
+    t.wrap_t = wrap(s.wrapT, "wrapT");
+    t.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+  }
+  return t;
+}
+
+std::shared_ptr<const GltfImage> Materials::map(int texture, const std::string& at) {
   if (texture < 0) return nullptr;
-  if (tex_coord != 0) r_.fail(at, "texCoord " + std::to_string(tex_coord) + " is not supported (only TEXCOORD_0)");
   if (size_t(texture) >= m_.textures.size()) r_.fail(at, "no texture " + std::to_string(texture));
   const int source = m_.textures[size_t(texture)].source;
   if (source < 0) r_.fail(pointer("textures", size_t(texture)), "no source (images of formats given by extensions are not read)");

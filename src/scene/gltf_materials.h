@@ -22,7 +22,9 @@ class Materials {
 
  private:
   GltfMaterial read(int index);
-  std::shared_ptr<const GltfImage> map(int texture, int tex_coord, const std::string& at);
+  std::shared_ptr<const GltfImage> map(int texture, const std::string& at);
+  // A textureInfo (index, texCoord, KHR_texture_transform) with its texture's sampler.
+  GltfTexture info(int texture, int tex_coord, const tinygltf::ExtensionMap& ext, const std::string& at);
 
   const Reader& r_;
   const tinygltf::Model& m_;

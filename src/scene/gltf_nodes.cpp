@@ -55,7 +55,7 @@ Resumable primitive(const tinygltf::Model& model, const Reader& r, MeshCache& ca
   if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES)
     r.fail(at, "mode " + std::to_string(p.mode) + " (" + mode_name(p.mode) + ") is not supported: only triangles (mode 4)");
   std::vector<int> key{p.indices};
-  for (const char* a : {"POSITION", "NORMAL", "TEXCOORD_0"}) {
+  for (const char* a : {"POSITION", "NORMAL", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0"}) {
     const auto it = p.attributes.find(a);
     key.push_back(it == p.attributes.end() ? -1 : it->second);
   }
@@ -86,6 +86,36 @@ Resumable primitive(const tinygltf::Model& model, const Reader& r, MeshCache& ca
       d->uvs[i].y = 1.0f - d->uvs[i].y;
       if (i % kStep == kStep - 1) co_await Work{kStep};
     }
+  }
+  if (auto t = p.attributes.find("TEXCOORD_1"); t != p.attributes.end()) {
+    read = r.floats(t->second, at + "/attributes/TEXCOORD_1", d->uvs1);
+    while (!co_await read) {
+    }
+    if (d->uvs1.size() != d->positions.size()) r.fail(at, "TEXCOORD_1 and POSITION counts differ");
+    for (size_t i = 0; i < d->uvs1.size(); ++i) {
+      d->uvs1[i].y = 1.0f - d->uvs1[i].y;  // as TEXCOORD_0
+      if (i % kStep == kStep - 1) co_await Work{kStep};
+    }
+  }
+  if (auto c = p.attributes.find("COLOR_0"); c != p.attributes.end()) {
+    const std::string cat = at + "/attributes/COLOR_0";
+    // VEC3 or VEC4 (alpha 1 when VEC3); linear, in [0, 1] (a colour cannot add energy).
+    if (c->second >= 0 && size_t(c->second) < model.accessors.size() && model.accessors[size_t(c->second)].type == TINYGLTF_TYPE_VEC3) {
+      std::vector<glm::vec3> rgb;
+      read = r.floats(c->second, cat, rgb);
+      while (!co_await read) {
+      }
+      d->colors.reserve(rgb.size());
+      for (const glm::vec3& v : rgb) d->colors.emplace_back(v, 1.0f);
+    } else {
+      read = r.floats(c->second, cat, d->colors);
+      while (!co_await read) {
+      }
+    }
+    if (d->colors.size() != d->positions.size()) r.fail(at, "COLOR_0 and POSITION counts differ");
+    for (const glm::vec4& v : d->colors)
+      if (!(glm::all(glm::greaterThanEqual(v, glm::vec4(0.0f))) && glm::all(glm::lessThanEqual(v, glm::vec4(1.0f)))))
+        r.fail(pointer("accessors", size_t(c->second)), "COLOR_0 values must be in [0, 1]");
   }
   std::vector<uint32_t> idx;
   if (p.indices >= 0) {
@@ -155,8 +185,8 @@ Resumable scene_parts(const tinygltf::Model& model, const Reader& r, Materials& 
         }
         const std::string pat = pointer("meshes", size_t(n.mesh)) + pointer("primitives", p);
         const GltfMaterial& mat = materials.get(mesh.primitives[p].material, pat + "/material");
-        if ((mat.base_color_map || mat.metallic_roughness_map || mat.normal_map) && d->uvs.empty())
-          r.fail(pat, "its material has image maps, but it has no TEXCOORD_0");
+        if (mat.uses_texcoord(0) && d->uvs.empty()) r.fail(pat, "its material has image maps on TEXCOORD_0, but it has no TEXCOORD_0");
+        if (mat.uses_texcoord(1) && d->uvs1.empty()) r.fail(pat, "its material has image maps on TEXCOORD_1, but it has no TEXCOORD_1");
         if (!d->triangles.empty()) parts.push_back({d, world, mat});
       }
     }

@@ -15,7 +15,22 @@
 
 namespace pt {
 
-Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver resolve, std::vector<GltfPart>& parts) {
+namespace {
+
+// What this reader implements of glTF's extensions (docs/gltf.md).
+constexpr const char* kSupportedExtensions[] = {"KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_texture_transform",
+                                                "KHR_materials_transmission"};
+
+bool supported(const std::string& e) {
+  for (const char* s : kSupportedExtensions)
+    if (e == s) return true;
+  return false;
+}
+
+}  // namespace
+
+Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver resolve, std::vector<GltfPart>& parts,
+                           std::vector<std::string>* warnings) {
   parts.clear();
   const GltfJson json = gltf_json(bytes, path);
   gltf::Context ctx;
@@ -27,6 +42,15 @@ Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver res
   Resumable reading = gltf::read_model(bytes, json, ctx, model, buffers, files);
   while (!co_await reading) {
   }
+  for (size_t i = 0; i < model.extensionsRequired.size(); ++i)
+    if (!supported(model.extensionsRequired[i]))
+      throw InputError(path, 0, gltf::pointer("extensionsRequired", i) + ": the extension " + model.extensionsRequired[i] +
+                                    " is required and not supported");
+  std::string unsupported;
+  for (const std::string& e : model.extensionsUsed)
+    if (!supported(e)) unsupported += (unsupported.empty() ? "" : ", ") + e;
+  if (!unsupported.empty() && warnings)
+    warnings->push_back(path + ": extensions not supported (their materials fall back to the core glTF material): " + unsupported);
   const gltf::Reader r(path, model, std::move(buffers));
   gltf::Materials materials(r, model, ctx);
   Resumable walk = gltf::scene_parts(model, r, materials, parts);
@@ -35,9 +59,10 @@ Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver res
   if (parts.empty()) throw InputError(path, 0, "no triangles in the default scene");
 }
 
-std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve) {
+std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve,
+                                 std::vector<std::string>* warnings) {
   std::vector<GltfPart> parts;
-  parse_gltf_steps(bytes, path, resolve, parts).finish();
+  parse_gltf_steps(bytes, path, resolve, parts, warnings).finish();
   return parts;
 }
 

@@ -23,16 +23,37 @@ struct GltfImage {
   LoadedImage image;
 };
 
-// The metallic-roughness material of a primitive, as far as our materials model it.
-// The maps are those of TEXCOORD_0 (docs/scene-format.md says what becomes of them).
+// A textureInfo: the image, its uv set, sampler and KHR_texture_transform (what
+// materials/gltf_map.h packs).
+struct GltfTexture {
+  std::shared_ptr<const GltfImage> image;  // null: no map
+  int tex_coord = 0;                       // after KHR_texture_transform's texCoord
+  int wrap_s = 0, wrap_t = 0;              // 0 REPEAT, 1 CLAMP_TO_EDGE, 2 MIRRORED_REPEAT
+  bool nearest = false;                    // magFilter NEAREST
+  glm::vec2 offset{0.0f}, scale{1.0f};
+  float rotation = 0.0f;
+  float strength = 1.0f;  // normalTexture.scale
+  explicit operator bool() const { return bool(image); }
+};
+
+// The metallic-roughness material of a primitive (docs/gltf.md: what becomes of it).
 struct GltfMaterial {
   glm::vec3 base_color{1.0f};
+  float alpha = 1.0f;
   float metallic = 1.0f;   // glTF defaults
   float roughness = 1.0f;
-  glm::vec3 emissive{0.0f};
-  float ior = 1.5f;
+  glm::vec3 emissive{0.0f};   // emissiveFactor * KHR_materials_emissive_strength
+  float ior = 1.5f;           // KHR_materials_ior (0: Fresnel 1)
   float transmission = 0.0f;  // KHR_materials_transmission
-  std::shared_ptr<const GltfImage> base_color_map, metallic_roughness_map, normal_map;
+  int alpha_mode = 0;         // 0 OPAQUE, 1 MASK, 2 BLEND
+  float alpha_cutoff = 0.5f;
+  bool double_sided = false;
+  GltfTexture base_color_map, metallic_roughness_map, normal_map, emissive_map, occlusion_map;
+  bool uses_texcoord(int set) const {
+    for (const GltfTexture* t : {&base_color_map, &metallic_roughness_map, &normal_map, &emissive_map})
+      if (*t && t->tex_coord == set) return true;
+    return false;
+  }
 };
 
 struct GltfPart {
@@ -50,11 +71,16 @@ using GltfResolver = std::function<std::string(const std::string& path)>;
 // Throw InputError naming the file and where in it: "file.gltf:12:" (JSON syntax),
 // "file.glb: byte 20:" (GLB structure) or "file.gltf: /accessors/3:" (a JSON pointer).
 // From memory; binary glTF is told from JSON by its magic ("glTF"), not by the name.
-std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve);
+// `warnings` (if given) receives one line per file naming the extensions it uses that are
+// not supported (their materials fall back to the core material); an unsupported one in
+// extensionsRequired is an error naming it.
+std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve,
+                                 std::vector<std::string>* warnings = nullptr);
 // The same, resumable (core/resumable.h; a unit is an element of an accessor, or 1/4096
 // of 256 KB of a buffer file). Buffer files are read in slices and a GLB's BIN chunk is
 // read where it lies (tinygltf is given neither); what stays one step is tinygltf's parse
 // of the JSON and its decoding of base64 data: URIs. `parts` must outlive it.
-Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver resolve, std::vector<GltfPart>& parts);
+Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver resolve, std::vector<GltfPart>& parts,
+                           std::vector<std::string>* warnings = nullptr);
 
 }  // namespace pt

@@ -135,9 +135,9 @@ TEST_CASE("glTF buffers are ours: a buffer file read 256 KB a slice, the GLB's B
   CHECK(slices(text, dir + "/big.gltf") - slices(glb, dir + "/quad.glb") == 5);
 }
 
-TEST_CASE("glTF maps become <Textured>: base colour, normal, metalness as the specular weight", "[loader][mesh][gltf]") {
+TEST_CASE("glTF maps become GltfPbr's: base colour (sRGB), metallic-roughness (linear), normal", "[loader][mesh][gltf]") {
   // The textured quad (its 4x4 image: red, green / blue, white quadrants) with that image
-  // also as metallicRoughnessTexture (metalness = blue) and normalTexture.
+  // also as metallicRoughnessTexture and normalTexture.
   std::string text = bytes_of("tests/fuzz/corpus/mesh_gltf/quad-textured.gltf");
   const std::string from = "\"metallicFactor\": 0.0, \"roughnessFactor\": 1.0, \"baseColorTexture\": {\"index\": 0}}";
   const size_t at = text.find(from);
@@ -155,22 +155,20 @@ TEST_CASE("glTF maps become <Textured>: base colour, normal, metalness as the sp
                                   dir + "/s.xml");
   REQUIRE(s.materials.size() == 1);
   const Material& m = s.materials[0];
-  REQUIRE(m.kind() == MaterialKind::Textured);
-  const Textured& t = *m.as<Textured>();
-  CHECK(m.tint == glm::vec3(0.5f, 1.0f, 1.0f));
-  CHECK(t.n == Approx(30.0));  // 2 / alpha^2 - 2, alpha = roughness^2 = 0.25
-  REQUIRE(s.images.size() == 3);
-  REQUIRE(t.diffuse >= 0);
-  REQUIRE(t.specular >= 0);
-  REQUIRE(t.normal >= 0);
+  REQUIRE(m.kind() == MaterialKind::GltfPbr);
+  const GltfPbr& t = *m.as<GltfPbr>();
+  CHECK(t.baseColor == glm::vec3(0.5f, 1.0f, 1.0f));
+  CHECK(t.metallic == 0.5f);
+  CHECK(t.roughness == 0.5f);
+  REQUIRE(s.images.size() == 3);  // one image, three decodings
+  REQUIRE(t.base.image >= 0);
+  REQUIRE(t.metal_rough.image >= 0);
+  REQUIRE(t.normal.image >= 0);
   // Texel (0, 0) of a map is the image's bottom-left: the blue quadrant.
-  const ImageMap& d = *s.images[size_t(t.diffuse)];
-  const ImageMap& sp = *s.images[size_t(t.specular)];
+  const ImageMap& d = *s.images[size_t(t.base.image)];
+  const ImageMap& mr = *s.images[size_t(t.metal_rough.image)];
   CHECK(d.rgba[0] == 0.0f);
   CHECK(d.rgba[2] == 1.0f);
-  CHECK(sp.rgba[0] == 0.5f);  // blue 1 x metallicFactor 0.5, grey
-  CHECK(sp.rgba[1] == 0.5f);
-  const size_t top_left = size_t(3 * 4) * 4;  // row 3 (the image's top), column 0: red
-  CHECK(sp.rgba[top_left] == 0.0f);
-  CHECK(s.images[size_t(t.normal)]->normal);
+  CHECK(mr.rgba[2] == 1.0f);  // blue, linear
+  CHECK(s.images[size_t(t.normal.image)]->normal);
 }

@@ -129,6 +129,7 @@ struct Scene {
   // Mesh geometry, shared by instances (a scene copy shares it too: it is never edited).
   std::vector<std::shared_ptr<const MeshData>> meshes;
   std::vector<std::shared_ptr<const ImageMap>> images;  // Textured maps, each file once per decoding
+  std::vector<std::string> warnings;  // what was read but not understood (a glTF's unsupported extensions)
 };
 
 // After editing lights[i], writes it into its sphere and emission (the data the

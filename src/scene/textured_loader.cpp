@@ -23,7 +23,7 @@ ImageMap decode_image_map(const LoadedImage& img, bool normal) {
   for (size_t i = 0; i < m.rgba.size(); ++i) {
     float& v = m.rgba[i];
     if (i % 4 == 3) {
-      v = 1.0f;  // alpha is not used
+      if (normal) v = 1.0f;  // colour maps keep their alpha (linear: glTF's base colour alpha)
     } else if (normal) {
       v = img.bits == 0 ? 2.0f * v - 1.0f
                         : std::max(-1.0f, (std::round(v * max_code) - 0.5f * (max_code + 1.0f)) / (0.5f * (max_code - 1.0f)));
@@ -51,6 +51,11 @@ int add_image_map(Scene& scene, const std::string& name, const LoadedImage& img,
   return int(scene.images.size()) - 1;
 }
 
+int add_linear_image_map(Scene& scene, const std::string& name, LoadedImage img, int line,
+                         const std::function<void(const std::string&)>& fail) {
+  img.bits = 0;  // code values as they are: no sRGB decoding
+  return add_image_map(scene, name + "#linear", img, false, line, fail);
+}
 
 int load_image_map(XmlAttrs& a, Scene& scene, const char* attr, bool normal, const PathResolver& resolve) {
   if (!a.has(attr)) return -1;

@@ -26,5 +26,9 @@ ImageMap decode_image_map(const LoadedImage& img, bool normal);
 // outside [0, 1] calls `fail` (which throws).
 int add_image_map(Scene& scene, const std::string& name, const LoadedImage& img, bool normal, int line,
                   const std::function<void(const std::string&)>& fail);
+// The same with the code values kept linear (glTF's metallic-roughness maps): decoded once
+// per name under the name "<name>#linear".
+int add_linear_image_map(Scene& scene, const std::string& name, LoadedImage img, int line,
+                         const std::function<void(const std::string&)>& fail);
 
 }  // namespace pt

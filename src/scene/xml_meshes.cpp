@@ -46,7 +46,7 @@ Resumable load_mesh_steps(MeshSource m, MeshEntry& e) {
         Resumable g = parse_gltf_steps(std::move(*bytes), m.src, [&e](const std::string& f) {
           e.files.push_back(f);
           return f;
-        }, e.parts);
+        }, e.parts, &e.warnings);
         while (!co_await g) {
         }
       } else if (has_extension(m.src, ".obj")) {
@@ -76,35 +76,46 @@ int Loader::mesh_index(const std::shared_ptr<const MeshData>& d) {
 int Loader::gltf_material(const GltfMaterial& g, XmlAttrs& a) {
   Material m;
   m.line = a.line();
-  m.tint = g.base_color;
-  const bool maps = g.base_color_map || g.metallic_roughness_map || g.normal_map;
-  if (g.emissive != glm::vec3(0.0f)) {
-    m.params = Emit{};
-    m.emission = g.emissive;
-  } else if (g.transmission >= 0.5f) {
-    m.params = SmoothDielectric{.ior = g.ior};
-  } else if (g.metallic >= 0.5f && !g.metallic_roughness_map) {
-    // A bright conductor tinted by the base colour; GGX alpha = roughness^2, as glTF.
-    m.params = Metal{.iorComplex = glm::vec2(0.15f, 3.6f), .glossiness = glm::clamp(g.roughness, 0.0f, 1.0f)};
-  } else if (maps) {
-    Textured t;
-    auto add = [&](const GltfImage& img, const std::string& name, const LoadedImage& pixels, bool normal) {
-      return add_image_map(scene, name, pixels, normal, a.line(), [&](const std::string& what) { a.fail("'" + img.name + "' " + what); });
-    };
-    if (g.base_color_map) t.diffuse = add(*g.base_color_map, g.base_color_map->name, g.base_color_map->image, false);
-    if (g.normal_map) t.normal = add(*g.normal_map, g.normal_map->name, g.normal_map->image, true);
-    if (g.metallic_roughness_map) {
-      // The Phong lobe's weight s is the metalness (blue, linear) times metallicFactor, grey;
-      // the lobe's exponent comes from roughnessFactor (n = 2 / alpha^2 - 2, alpha = roughness^2).
-      LoadedImage s = g.metallic_roughness_map->image;
-      for (size_t i = 0; i < s.rgba.size(); i += 4) s.rgba[i] = s.rgba[i + 1] = s.rgba[i + 2] = s.rgba[i + 2] * g.metallic;
-      s.bits = 0;
-      t.specular = add(*g.metallic_roughness_map, g.metallic_roughness_map->name + "#metalness*" + std::to_string(g.metallic), s, false);
-    }
-    const float alpha = g.roughness * g.roughness;
-    t.n = alpha > 0.0f ? glm::clamp(2.0f / (alpha * alpha) - 2.0f, 1.0f, 1e5f) : 1e5f;
-    m.params = t;
+  m.emission = g.emissive;  // with the base colour: both shade (docs/gltf.md)
+  if (g.transmission >= 0.5f) {
+    // KHR_materials_transmission has no BSDF of its own yet: a stand-in smooth dielectric.
+    m.tint = g.base_color;
+    m.params = SmoothDielectric{.ior = g.ior >= 1.0f ? g.ior : 1.5f};
+    scene.materials.push_back(m);
+    return int(scene.materials.size()) - 1;
   }
+  GltfPbr p;
+  p.baseColor = g.base_color;
+  p.alpha = g.alpha;
+  p.metallic = g.metallic;
+  p.roughness = g.roughness;
+  p.ior = g.ior;
+  p.alphaMode = g.alpha_mode;
+  p.alphaCutoff = g.alpha_cutoff;
+  p.doubleSided = g.double_sided;
+  // The maps' images, decoded once per scene and decoding: colour maps sRGB (alpha linear),
+  // the metallic-roughness map linear, the normal map onto [-1, 1].
+  enum Decoding { kSrgb, kLinear, kNormal };
+  auto add = [&](const GltfTexture& t, Decoding d, GltfMap& out) {
+    if (!t) return;
+    const GltfImage& img = *t.image;
+    auto fail = [&](const std::string& what) { a.fail("'" + img.name + "' " + what); };
+    out.image = d == kLinear ? add_linear_image_map(scene, img.name, img.image, a.line(), fail)
+                             : add_image_map(scene, img.name, img.image, d == kNormal, a.line(), fail);
+    out.tex_coord = t.tex_coord;
+    out.wrap_s = t.wrap_s;
+    out.wrap_t = t.wrap_t;
+    out.nearest = t.nearest;
+    out.offset = t.offset;
+    out.scale = t.scale;
+    out.rotation = t.rotation;
+    out.strength = t.strength;
+  };
+  add(g.base_color_map, kSrgb, p.base);
+  add(g.metallic_roughness_map, kLinear, p.metal_rough);
+  add(g.normal_map, kNormal, p.normal);
+  add(g.emissive_map, kSrgb, p.emissive);
+  m.params = p;
   scene.materials.push_back(m);
   return int(scene.materials.size()) - 1;
 }
@@ -144,6 +155,7 @@ void Loader::mesh(const XMLElement* e) {
   if (!entry.loaded) load_mesh_steps(source, entry).finish();  // else SceneLoad read it ahead
   if (entry.error) a.fail("cannot load the mesh: " + *entry.error);
   if (!entry.used) scene.files.insert(scene.files.end(), entry.files.begin(), entry.files.end());
+  if (!entry.used) scene.warnings.insert(scene.warnings.end(), entry.warnings.begin(), entry.warnings.end());
   entry.used = true;
   const std::vector<GltfPart>& parts = entry.parts;
   glm::mat4 place = glm::translate(glm::mat4(1.0f), position);

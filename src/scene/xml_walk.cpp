@@ -109,6 +109,16 @@ int Loader::image_map(XmlAttrs& a, const char* attr, bool normal) {
   return load_image_map(a, scene, attr, normal, [this](XmlAttrs& at, const std::string& p) { return resolve_path(at, p); });
 }
 
+int Loader::image_map_linear(XmlAttrs& a, const char* attr) {
+  if (!a.has(attr)) return -1;
+  const std::string given = a.text(attr);
+  const std::string path = resolve_path(a, given);
+  LoadedImage img;
+  std::string why;
+  if (!read_image(path, &img, &why)) a.fail("cannot read '" + given + "': " + why);
+  return add_linear_image_map(scene, path, img, a.line(), [&](const std::string& what) { a.fail("'" + given + "' " + what); });
+}
+
 void Loader::shape(const XMLElement* e) {
   // One of the kinds (shapes/kinds.h): its stem parses its attributes, except a kind whose
   // element reads files (<Mesh>: Loader::mesh).

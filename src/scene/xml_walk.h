@@ -34,6 +34,7 @@ struct MeshEntry {
   bool used = false;  // its files are in the scene's list
   std::vector<GltfPart> parts;
   std::vector<std::string> files;  // the files it read besides src (a glTF's buffers and images)
+  std::vector<std::string> warnings;  // a glTF's unsupported extensions (parse_gltf)
   std::optional<std::string> error;  // why it could not be loaded
 };
 
@@ -59,9 +60,8 @@ struct Loader final : MaterialLoader {
   int material(const tinyxml2::XMLElement* e, glm::vec3 tint);
   // The index of mesh data d in the scene's list (added once).
   int mesh_index(const std::shared_ptr<const MeshData>& d);
-  // A glTF material as ours (docs/scene-format.md, "glTF materials"): emission, then
-  // transmission, then a metal without a metallic-roughness map, then image maps as
-  // <Textured>, else <Diffuse> of the base colour.
+  // A glTF material as ours (docs/gltf.md): GltfPbr (the glTF BSDF with its maps), or a
+  // stand-in SmoothDielectric for transmission >= 0.5.
   int gltf_material(const GltfMaterial& g, XmlAttrs& a);
   // The source of a <Mesh> (also read ahead by SceneLoad, which loads it before the scene
   // is built); throws InputError for a malformed one.
@@ -84,6 +84,7 @@ struct Loader final : MaterialLoader {
   // MaterialLoader: what a material kind's parse asks of the scene (materials/material.h).
   int child(const tinyxml2::XMLElement* e, glm::vec3 tint) override;
   int image_map(XmlAttrs& a, const char* attr, bool normal) override;
+  int image_map_linear(XmlAttrs& a, const char* attr) override;
   int composite_depth() const override { return composite_depth_; }
 };
 

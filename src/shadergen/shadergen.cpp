@@ -7,6 +7,7 @@
 
 #include "core/records.h"
 #include "core/sobol.h"
+#include "materials/gltf_map.h"
 #include "shadergen/embedded.h"
 #include "shadergen/textured_gen.h"
 
@@ -26,6 +27,7 @@ Features Features::of(const Scene& scene) {
   // Every material in the list is used (by a shape or as a composite's child), with the
   // kinds whose functions its own call (a texture shades as Diffuse).
   for (const Material& m : scene.materials) f.materials |= kind_bit(m.kind()) | kMaterialTraits[int(m.kind())].needs;
+  for (const Material& m : scene.materials) f.material_features |= pt::material_features(m.params);
   for (const Shape& s : scene.shapes)
     if (is_sampled_light(scene, s)) f.lights |= 1u << int(s.kind());
   return f;
@@ -155,6 +157,9 @@ std::string generate_prelude(const Features& features) {
     if (f.has_light(ShapeKind(i))) g += "#define HAS_LIGHT_" + upper(kShapeKinds[i].glsl) + " 1\n";
   for (int i = 0; i < kNumMaterialKinds; ++i)
     if (f.has(MaterialKind(i))) g += "#define HAS_MAT_" + upper(kMaterialKinds[i].glsl) + " 1\n";
+  for (int i = 0; i < kNumMaterialFeatures; ++i)
+    if (f.has(MaterialFeature(i))) g += std::string("#define HAS_") + kMaterialFeatureNames[i] + " 1\n";
+  if (f.image_maps()) g += "#define HAS_IMAGE_MAPS 1\n";
   if (f.env_map) g += "#define HAS_ENV_MAP 1\n";
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i)) && (kShapeKinds[i].bvh == BvhRole::Triangles || kShapeKinds[i].bvh == BvhRole::Instanced)) {
@@ -170,7 +175,7 @@ std::string generate_prelude(const Features& features) {
       g += glsl_record(vertex_layout());
       break;
     }
-  if (f.has(MaterialKind::Textured)) g += "precision highp sampler2DArray;\n" + glsl_record(uv_layout());
+  if (f.image_maps()) g += "precision highp sampler2DArray;\n" + glsl_record(uv_layout()) + glsl_record(texinfo_layout());
   g += glsl_sobol_table();
   g += "#include \"rng.glsl\"\n#include \"sampler.glsl\"\n#include \"sampling.glsl\"\n#include \"surface_types.glsl\"\n";
   for (int i = 0; i < kNumMaterialKinds; ++i)
@@ -205,7 +210,15 @@ std::string generate_prelude(const Features& features) {
     g += std::string("  if (s.kind == SHAPE_") + upper(kShapeKinds[i].glsl) + ") intersect_" + kShapeKinds[i].glsl + "(s, id, r, " +
          (kShapeKinds[i].per_ray ? "pre." + std::string(kShapeKinds[i].glsl) + ", " : std::string()) + "h);\n";
   }
-  g += "}\n#include \"bvh.glsl\"\n";
+  g += "}\n";
+  if (f.has(MaterialFeature::HitCuts)) {  // the traversal asks the kinds that cut hits (bvh.glsl)
+    g += "bool hit_present(int shape, int prim, Ray r, Hit h) {\n  MaterialRec m = load_material(load_shape(shape).material);\n";
+    for (int i = 0; i < kNumMaterialKinds; ++i)
+      if (f.has(MaterialKind(i)) && kMaterialTraits[i].cuts_hits)
+        g += "  if (m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") return hit_present_" + kMaterialKinds[i].glsl + "(m, prim, r, h);\n";
+    g += "  return true;\n}\n";
+  }
+  g += "#include \"bvh.glsl\"\n";
   std::string delta = "bool material_is_delta(MaterialRec m) {\n";
   std::string eval = "vec3 material_eval(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {\n";
   std::string smp = "bool material_sample(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {\n";
@@ -224,22 +237,24 @@ std::string generate_prelude(const Features& features) {
   // level; a kind resolved at the hit becomes what shades there.
   std::string comp = "MaterialRec resolve_composites(MaterialRec m, float cos_o, bool entering, float u) {\n", hit =
                      "void resolve_hit(inout Surface sf, Ray r, Hit h) {\n";
+  std::string emit = "void emission_hit(inout Surface sf, Ray r, Hit h) {\n";
   std::string comp_cases;
   for (int i = 0; i < kNumMaterialKinds; ++i) {
     if (!f.has(MaterialKind(i))) continue;
     const std::string k = kMaterialKinds[i].glsl, cond = "if (m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") ";
     if (kMaterialTraits[i].composite) comp_cases += std::string(comp_cases.empty() ? "    " : "    else ") + cond + "m = choose_" + k + "(m, cos_o, entering, u);\n";
     if (kMaterialTraits[i].resolves_at_hit) hit += "  if (sf.m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") resolve_hit_" + k + "(sf, r, h);\n";
+    if (kMaterialTraits[i].emission_at_hit) emit += "  if (sf.m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") emission_hit_" + k + "(sf, r, h);\n";
   }
   if (!comp_cases.empty())
     comp += "  for (int level = 0; level < " + std::to_string(kMaxCompositeDepth) + "; ++level) {\n" + comp_cases + "    else break;\n  }\n";
-  if (f.has(MaterialKind::Textured)) g += glsl_textured_support(f);  // image maps: uv of the shapes present
+  if (f.image_maps()) g += glsl_textured_support(f);  // image maps: uv of the shapes present
   // A shape kind's shading normal at the hit (a mesh's interpolated vertex normals).
   std::string sn = "bool shape_shading_normal(ShapeRec s, Hit h, out vec3 ns) {\n";
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i)) && kShapeTraits[i].shading_normal)
       sn += "  if (s.kind == SHAPE_" + upper(kShapeKinds[i].glsl) + ") return shading_normal_" + kShapeKinds[i].glsl + "(s, h, ns);\n";
-  g += comp + "  return m;\n}\n" + hit + "}\n" + sn + "  ns = vec3(0.0);\n  return false;\n}\n";
+  g += comp + "  return m;\n}\n" + hit + "}\n" + emit + "}\n" + sn + "  ns = vec3(0.0);\n  return false;\n}\n";
   // Light sampling over the emitter kinds present (solid-angle densities).
   std::string lsmp = "bool light_sample_shape(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {\n";
   std::string lpdf = "float light_pdf_shape(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {\n";

@@ -22,7 +22,10 @@ std::string glsl_textured_support(const Features& f) {
     g += "  if (s.kind == SHAPE_" + up + ") return SurfaceUv(uv_" + k + args + ", tangent_" + k + args + ");\n";
   }
   g += "  return SurfaceUv(vec2(0.0), vec4(frame_from(n).t, 1.0));\n}\n";
-  g += "#include \"materials/textured_resolve.glsl\"\n";
+  // Each image-map kind's resolution at the hit: materials/<kind>_resolve.glsl.
+  for (int i = 0; i < kNumMaterialKinds; ++i)
+    if (f.has(MaterialKind(i)) && kMaterialTraits[i].image_maps)
+      g += "#include \"materials/" + std::string(kMaterialKinds[i].glsl) + "_resolve.glsl\"\n";
   return g;
 }
 

@@ -78,7 +78,7 @@ float pdf_light_box(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
 }
 #endif
 
-#ifdef HAS_MAT_TEXTURED
+#ifdef HAS_IMAGE_MAPS
 // Image maps: every face spans [0, 1]^2 (three.js's BoxGeometry orientation). On the
 // four side faces v runs up +y; on the top and bottom faces u runs along +x. u runs along
 // t = unit dp/du: -z on +x, +z on -x, +x on +y, -y and +z, -x on -z, so that

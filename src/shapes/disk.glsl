@@ -43,7 +43,7 @@ float pdf_light_disk(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
 }
 #endif
 
-#ifdef HAS_MAT_TEXTURED
+#ifdef HAS_IMAGE_MAPS
 // Image maps: the disk inscribed in [0, 1]^2 in its tangent frame frame_from(normal)
 // (as a plane's: u along t, v along b), centred at (0.5, 0.5).
 vec2 uv_disk(ShapeRec s, vec3 p, vec3 n) {

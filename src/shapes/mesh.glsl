@@ -34,7 +34,7 @@ bool shading_normal_mesh(ShapeRec s, Hit h, out vec3 ns) {
   return mesh_attributes(h.prim, h.p, ns, uv_unused) && dot(ns, ns) > 0.0;
 }
 
-#ifdef HAS_MAT_TEXTURED
+#ifdef HAS_IMAGE_MAPS
 // Image maps on meshes: the vertex uv interpolated at the hit, and the tangent along
 // dp/du from the triangle's uv parameterisation (w: the handedness of dp/dv).
 vec2 uv_mesh(ShapeRec s, int prim, vec3 p, vec3 n) {

@@ -11,6 +11,8 @@ struct MeshData {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;  // empty or one per position
   std::vector<glm::vec2> uvs;      // empty or one per position
+  std::vector<glm::vec2> uvs1;     // glTF's TEXCOORD_1: empty or one per position
+  std::vector<glm::vec4> colors;   // glTF's COLOR_0 (linear RGBA): empty or one per position
   std::vector<glm::uvec3> triangles;
 };
 

@@ -13,7 +13,7 @@ void intersect_plane(ShapeRec s, int id, Ray r, inout Hit h) {
   h.p -= k.normal * (dot(k.normal, h.p) - k.d);
 }
 
-#ifdef HAS_MAT_TEXTURED
+#ifdef HAS_IMAGE_MAPS
 // Image maps: planar in the plane's tangent frame frame_from(normal), in scene units
 // (the material's uvScale sets the tile size): uv = (dot(p, t), dot(p, b)). For the floor
 // (normal +y) t = +x and b = -z: u = x, v = -z.

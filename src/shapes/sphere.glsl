@@ -65,7 +65,7 @@ float pdf_light_sphere(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
 }
 #endif
 
-#ifdef HAS_MAT_TEXTURED
+#ifdef HAS_IMAGE_MAPS
 // Image maps: longitude and latitude of the outward normal n (the direction from the
 // centre, so a moving sphere carries its texture): u = phi / (2 pi) with
 // phi = atan(-n.z, n.x), v = 1 - theta / pi with theta = acos(n.y) (computed as

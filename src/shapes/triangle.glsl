@@ -106,7 +106,7 @@ float pdf_light_triangle(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
 }
 #endif
 
-#ifdef HAS_MAT_TEXTURED
+#ifdef HAS_IMAGE_MAPS
 // Image maps: the vertices' uv (XML uv0, uv1, uv2; default (0,0), (1,0), (0,1)) in a
 // UvRec (core/records.h), interpolated with the barycentric weights of p.
 // barycentric_triangle is the hook for meshes: a mesh hit carries its weights and skips it.

@@ -1,0 +1,232 @@
+#!/usr/bin/env python3
+"""Writes the glTF test and showcase assets under assets/gltf/ (docs/gltf.md): .gltf JSON
+with one .bin buffer and PNG images, with nothing but the Python 3 standard library.
+
+    python3 tools/gen_gltf_assets.py            # (re)writes assets/gltf/
+
+Showcase (scenes/gltf/ shows them): mr-grid (5 x 5 spheres, metallic across, roughness
+down), dielectric-grid (5 spheres, roughness 0..1, ior 1.5 through KHR_materials_ior),
+maps-quad (base colour and normal maps), emissive (emissive strength 1, 4, 16).
+Tests (tests/gltf_materials_test.cpp): test-*.gltf, quads z = 0 over [-1, 1]^2 facing +z.
+"""
+import json
+import math
+import os
+import struct
+import zlib
+
+OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "assets", "gltf")
+
+
+def png(path, rows, channels):
+    """rows: list of rows (top row first) of channel tuples of 0..255 codes."""
+    h, w = len(rows), len(rows[0])
+    raw = b"".join(b"\0" + bytes(c for px in row for c in px) for row in rows)
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+    colour = {3: 2, 4: 6}[channels]
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, colour, 0, 0, 0)) +
+                chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+class Gltf:
+    def __init__(self, name):
+        self.name = name
+        self.bin = bytearray()
+        self.doc = {"asset": {"version": "2.0", "generator": "tools/gen_gltf_assets.py"}, "scene": 0,
+                    "scenes": [{"nodes": []}], "nodes": [], "meshes": [], "materials": [], "accessors": [],
+                    "bufferViews": [], "buffers": [], "textures": [], "images": [], "samplers": []}
+        self.used = set()
+        self.cache = {}
+
+    def accessor(self, fmt, kind, values, target=None):
+        key = (id(values), fmt, kind)  # the same list twice (a sphere per material): one accessor
+        if key in self.cache:
+            return self.cache[key]
+        self.cache[key] = len(self.doc["accessors"])
+        while len(self.bin) % 4:
+            self.bin.append(0)
+        offset = len(self.bin)
+        comps = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}[kind]
+        flat = [c for v in values for c in (v if comps > 1 else (v,))]
+        self.bin += struct.pack("<%d%s" % (len(flat), fmt), *flat)
+        view = {"buffer": 0, "byteOffset": offset, "byteLength": len(self.bin) - offset}
+        if target:
+            view["target"] = target
+        self.doc["bufferViews"].append(view)
+        acc = {"bufferView": len(self.doc["bufferViews"]) - 1, "componentType": 5126 if fmt == "f" else 5125,
+               "count": len(values), "type": kind}
+        if kind == "VEC3" and fmt == "f":
+            acc["min"] = [min(v[i] for v in values) for i in range(3)]
+            acc["max"] = [max(v[i] for v in values) for i in range(3)]
+        self.doc["accessors"].append(acc)
+        return len(self.doc["accessors"]) - 1
+
+    def mesh(self, positions, normals, uvs, indices, material, uvs1=None, colors=None):
+        attrs = {"POSITION": self.accessor("f", "VEC3", positions, 34962),
+                 "NORMAL": self.accessor("f", "VEC3", normals, 34962)}
+        if uvs is not None:
+            attrs["TEXCOORD_0"] = self.accessor("f", "VEC2", uvs, 34962)
+        if uvs1 is not None:
+            attrs["TEXCOORD_1"] = self.accessor("f", "VEC2", uvs1, 34962)
+        if colors is not None:
+            attrs["COLOR_0"] = self.accessor("f", "VEC4", colors, 34962)
+        prim = {"attributes": attrs, "indices": self.accessor("I", "SCALAR", indices, 34963), "material": material}
+        self.doc["meshes"].append({"primitives": [prim]})
+        return len(self.doc["meshes"]) - 1
+
+    def node(self, mesh, translation=(0, 0, 0)):
+        self.doc["nodes"].append({"mesh": mesh, "translation": list(translation)})
+        self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
+
+    def material(self, m):
+        self.doc["materials"].append(m)
+        for e in m.get("extensions", {}):
+            self.used.add(e)
+        return len(self.doc["materials"]) - 1
+
+    def texture(self, image_name, rows, channels=3, wrap=(10497, 10497), nearest=True, tex_coord=0, transform=None):
+        png(os.path.join(OUT, image_name), rows, channels)
+        self.doc["images"].append({"uri": image_name})
+        sampler = {"wrapS": wrap[0], "wrapT": wrap[1], "magFilter": 9728 if nearest else 9729}
+        self.doc["samplers"].append(sampler)
+        self.doc["textures"].append({"source": len(self.doc["images"]) - 1, "sampler": len(self.doc["samplers"]) - 1})
+        info = {"index": len(self.doc["textures"]) - 1, "texCoord": tex_coord}
+        if transform:
+            info["extensions"] = {"KHR_texture_transform": transform}
+            self.used.add("KHR_texture_transform")
+        return info
+
+    def write(self):
+        self.doc["buffers"] = [{"uri": self.name + ".bin", "byteLength": len(self.bin)}]
+        for k in ("textures", "images", "samplers"):
+            if not self.doc[k]:
+                del self.doc[k]
+        if self.used:
+            self.doc["extensionsUsed"] = sorted(self.used)
+        with open(os.path.join(OUT, self.name + ".bin"), "wb") as f:
+            f.write(self.bin)
+        with open(os.path.join(OUT, self.name + ".gltf"), "w") as f:
+            json.dump(self.doc, f, indent=1)
+            f.write("\n")
+
+
+def quad(size=1.0, uv_range=((0.0, 0.0), (1.0, 1.0))):
+    """The quad z = 0 over [-size, size]^2 facing +z; glTF uv (v down the image)."""
+    (u0, v0), (u1, v1) = uv_range
+    p = [(-size, -size, 0), (size, -size, 0), (size, size, 0), (-size, size, 0)]
+    uv = [(u0, v1), (u1, v1), (u1, v0), (u0, v0)]
+    return p, [(0, 0, 1)] * 4, uv, [0, 1, 2, 0, 2, 3]
+
+
+def sphere(radius, rings=24, segments=48):
+    p, n, uv, idx = [], [], [], []
+    for i in range(rings + 1):
+        th = math.pi * i / rings
+        for j in range(segments + 1):
+            ph = 2 * math.pi * j / segments
+            d = (math.sin(th) * math.cos(ph), math.cos(th), -math.sin(th) * math.sin(ph))
+            p.append(tuple(radius * c for c in d))
+            n.append(d)
+            uv.append((j / segments, i / rings))
+    for i in range(rings):
+        for j in range(segments):
+            a, b = i * (segments + 1) + j, (i + 1) * (segments + 1) + j
+            idx += [a, b, a + 1, a + 1, b, b + 1]
+    return p, n, uv, idx
+
+
+def showcase():
+    g = Gltf("mr-grid")  # metallic 0..1 left to right, roughness 0..1 bottom to top
+    s = sphere(0.4)
+    for i in range(5):
+        for j in range(5):
+            m = g.material({"name": "m%d-r%d" % (i, j), "pbrMetallicRoughness": {
+                "baseColorFactor": [0.95, 0.64, 0.54, 1], "metallicFactor": i / 4, "roughnessFactor": j / 4}})
+            g.node(g.mesh(*s, m), (1.0 * (i - 2), 1.0 * j + 0.4, 0))
+    g.write()
+    g = Gltf("dielectric-grid")  # a red plastic of ior 1.5, roughness 0..1
+    for i in range(5):
+        m = g.material({"name": "r%d" % i, "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.08, 1],
+                        "metallicFactor": 0, "roughnessFactor": i / 4}, "extensions": {"KHR_materials_ior": {"ior": 1.5}}})
+        g.node(g.mesh(*s, m), (1.0 * (i - 2), 0.4, 0))
+    g.write()
+    g = Gltf("maps-quad")  # an 8 x 8 checker of two colours and a normal map of round bumps
+    n = 64
+    base = [[(200, 60, 40) if ((x // 8) + (y // 8)) % 2 else (230, 220, 200) for x in range(n)] for y in range(n)]
+    normal = []
+    for y in range(n):
+        row = []
+        for x in range(n):
+            cx, cy = (x % 16) - 7.5, (y % 16) - 7.5
+            r2 = (cx * cx + cy * cy) / 49.0
+            if r2 < 1:  # a hemispherical bump: tangent-space normal (cx, -cy (image y runs down), sqrt(1 - r2))
+                nx, ny = cx / 7.0, -cy / 7.0
+                nz = math.sqrt(max(0.0, 1 - nx * nx - ny * ny))
+            else:
+                nx, ny, nz = 0.0, 0.0, 1.0
+            row.append(tuple(int(round((c * 0.5 + 0.5) * 255)) for c in (nx, ny, nz)))
+        normal.append(row)
+    m = g.material({"name": "maps", "pbrMetallicRoughness": {"baseColorTexture": g.texture("maps-quad-base.png", base, nearest=False),
+                    "metallicFactor": 0, "roughnessFactor": 0.45},
+                    "normalTexture": dict(g.texture("maps-quad-normal.png", normal, nearest=False), scale=1.0)})
+    g.node(g.mesh(*quad(1.5), m))
+    g.write()
+    g = Gltf("emissive")  # emissive strength 1, 4, 16 over a grey base
+    for i, k in enumerate((1, 4, 16)):
+        m = g.material({"name": "e%d" % k, "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0,
+                        "roughnessFactor": 0.5}, "emissiveFactor": [1.0, 0.55, 0.2],
+                        "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": k}}})
+        g.node(g.mesh(*s, m), (1.1 * (i - 1), 0.4, 0))
+    g.write()
+
+
+def tests():
+    W, K = (255, 255, 255), (0, 0, 0)
+    # Checker: white metal (mr (0, 0, 255): roughness 0, metallic 1) beside black dielectric;
+    # image rows top first: top-left and bottom-right are the metal.
+    for name, tc in (("test-checker", 0), ("test-uv1", 1)):
+        g = Gltf(name)
+        p, n, uv, idx = quad()
+        uv1 = None
+        if tc == 1:
+            uv1, uv = uv, [(0.7, 0.3)] * 4  # TEXCOORD_0 constant: only TEXCOORD_1 shows the checker
+        m = g.material({"doubleSided": True, "pbrMetallicRoughness": {
+            "baseColorTexture": g.texture(name + "-base.png", [[W, K], [K, W]], tex_coord=tc),
+            "metallicRoughnessTexture": g.texture(name + "-mr.png", [[(0, 0, 255), (0, 0, 0)], [(0, 0, 0), (0, 0, 255)]], tex_coord=tc),
+            "metallicFactor": 1, "roughnessFactor": 1}})
+        g.node(g.mesh(p, n, uv, idx, m, uvs1=uv1))
+        g.write()
+    # Wrap modes and the texture transform, read in emission (black base, emissive map
+    # of two texels, black | white): u runs over [-1, 2] across the quad.
+    for name, wrap, transform, span in (("test-wrap-repeat", 10497, None, (-1, 2)), ("test-wrap-clamp", 33071, None, (-1, 2)),
+                                        ("test-wrap-mirror", 33648, None, (-1, 2)),
+                                        ("test-transform", 10497, {"offset": [0.5, 0], "scale": [2, 1]}, (0, 1))):
+        g = Gltf(name)
+        p, n, uv, idx = quad(uv_range=((span[0], 0.0), (span[1], 1.0)))
+        m = g.material({"doubleSided": True, "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 1, "roughnessFactor": 1},
+                        "emissiveFactor": [1, 1, 1], "emissiveTexture": g.texture(name + ".png", [[K, W]], wrap=(wrap, wrap), transform=transform)})
+        g.node(g.mesh(p, n, uv, idx, m))
+        g.write()
+    # Alpha: a black smooth metal quad (a mirror of Schlick reflectance ~0 seen head-on) whose alpha is 0.4 on its left
+    # half and 0.6 on its right (base colour map alpha x COLOR_0 alpha of 1), MASK at 0.5;
+    # BLEND at alpha 0.5 (the factor); a single-sided one (culled from behind).
+    g = Gltf("test-mask")
+    m = g.material({"doubleSided": True, "alphaMode": "MASK", "alphaCutoff": 0.5, "pbrMetallicRoughness": {
+        "baseColorTexture": g.texture("test-mask.png", [[(0, 0, 0, 102), (0, 0, 0, 153)]], channels=4), "metallicFactor": 1, "roughnessFactor": 0}})
+    p, n, uv, idx = quad()
+    g.node(g.mesh(p, n, uv, idx, m, colors=[(1, 1, 1, 1)] * 4))
+    g.write()
+    for name, extra in (("test-blend", {"doubleSided": True, "alphaMode": "BLEND"}), ("test-single-sided", {})):
+        g = Gltf(name)
+        m = g.material(dict(extra, pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 0.5 if "blend" in name else 1],
+                                                         "metallicFactor": 1, "roughnessFactor": 0}))
+        g.node(g.mesh(*quad(), m))
+        g.write()
+
+
+if __name__ == "__main__":
+    os.makedirs(OUT, exist_ok=True)
+    showcase()
+    tests()
