@@ -35,3 +35,19 @@ execute_process(COMMAND ${LAUNCH} "${BIN}" render "${OUT}/render-settings.xml" -
 if(NOT rc EQUAL 0 OR NOT out MATCHES "mode: path" OR NOT out MATCHES "rendered 5 spp at 16x16, 7 bounces")
   message(FATAL_ERROR "flags did not win over <Render> (${rc}): ${out} ${err}")
 endif()
+# The error estimate: printed at the end; --target-relmse stops once it is reached (the
+# closed room's error halves with the samples: a loose target stops long before --spp).
+execute_process(COMMAND ${LAUNCH} "${BIN}" render "${SRC}/scenes/analytic/closed-room.xml" --size 24x24 --spp 4096 --target-relmse 0.004 --out "${OUT}/target.pfm"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "target relMSE 0.004 reached" OR NOT out MATCHES "estimated relMSE: [0-9.e-]+ " OR out MATCHES "rendered 4096 spp")
+  message(FATAL_ERROR "--target-relmse did not stop the render (${rc}): ${out} ${err}")
+endif()
+string(REGEX MATCH "estimated relMSE: ([0-9.e-]+)" _ "${out}")
+if(NOT CMAKE_MATCH_1 LESS_EQUAL 0.004)
+  message(FATAL_ERROR "stopped above the target: ${CMAKE_MATCH_1}")
+endif()
+execute_process(COMMAND ${LAUNCH} "${BIN}" render "${SRC}/scenes/analytic/closed-room.xml" --size 8x8 --spp 1 --out "${OUT}/one.pfm"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "estimated relMSE: unknown")
+  message(FATAL_ERROR "1 spp must say the estimate is unknown (${rc}): ${out} ${err}")
+endif()

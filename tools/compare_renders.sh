@@ -5,7 +5,7 @@
 #   bash tools/compare_renders.sh save DIR        render every scene into DIR
 #   bash tools/compare_renders.sh compare DIR     render again and cmp each image with DIR
 # Environment: PT_BIN (default build/native/pathtracer), MODE (default path), SIZE
-# (default 128x96), SPP (default 16). Exit 1 when any image differs or is missing.
+# (default 128x96), SPP (default 16), KERNEL (compute or fragment; default: the binary's). Exit 1 when any image differs or is missing.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 what="${1:?save|compare}"
@@ -14,6 +14,8 @@ bin="${PT_BIN:-build/native/pathtracer}"
 mode="${MODE:-path}"
 size="${SIZE:-128x96}"
 spp="${SPP:-16}"
+kernel=()
+if [[ -n "${KERNEL:-}" ]]; then kernel=(--kernel "$KERNEL"); fi
 out="$dir"
 if [[ "$what" == compare ]]; then out="$(mktemp -d)"; trap 'rm -rf "$out"' EXIT; fi
 mkdir -p "$out"
@@ -22,7 +24,7 @@ for s in $(find scenes -name '*.xml' | sort); do
   n="$(echo "${s#scenes/}" | sed 's#/#-#g; s#\.xml$##')-$mode.pfm"
   # One pass of all the samples: the default adapts the pass size to time, and the running
   # mean rounds differently for other splits.
-  "$bin" render "$s" --mode "$mode" --spp "$spp" --spp-per-pass "$spp" --size "$size" --out "$out/$n" >/dev/null
+  "$bin" render "$s" --mode "$mode" --spp "$spp" --spp-per-pass "$spp" --size "$size" "${kernel[@]}" --out "$out/$n" >/dev/null
   if [[ "$what" == compare ]]; then
     if [[ ! -f "$dir/$n" ]]; then
       echo "missing  $n (not in $dir)"

@@ -1,7 +1,8 @@
 // `bench`: speed against error. Renders for a fixed time and records, at 1, 2, 4, ...
 // samples per pixel, the render time (draws only, finished with glFinish; readbacks and
-// metrics are outside the clock), relMSE and RMSE against a reference, and the rays cast
-// (counted in the shader). `plot` draws CSVs as log-log curves in an SVG.
+// metrics are outside the clock, except the error estimate's snapshot at each power of
+// two, which is part of rendering), relMSE and RMSE against a reference, the estimated
+// relMSE without one (render/error_estimator.h), and the rays cast (counted in the shader). `plot` draws CSVs as log-log curves in an SVG.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -54,6 +55,7 @@ int run_bench(const Options& o) {
     double seconds;
     ErrorMetrics e;
     double rays;
+    ErrorEstimate est;
   };
   std::vector<Row> rows;
   RenderSettings pace;  // the adaptive draw size; checkpoints cap the samples per sweep
@@ -81,20 +83,27 @@ int run_bench(const Options& o) {
     }
     if (r.mid_sweep()) continue;
     if (r.samples() == next || secs >= duration) {
-      rows.push_back({r.samples(), secs, image_error(r.read_radiance(), ref), r.counters().rays});
+      const std::vector<float> mean = r.read_radiance();
+      rows.push_back({r.samples(), secs, image_error(mean, ref), r.counters().rays, r.estimate_error()});
       if (r.samples() == next) next *= 2;
     }
   }
   const Row& last = rows.back();
-  std::printf("%s: %d spp in %.3f s at %dx%d: %.2f spp/s, %.1f Mrays/s; relMSE %.4g, RMSE %.4g\n",
+  std::printf("%s: %d spp in %.3f s at %dx%d: %.2f spp/s, %.1f Mrays/s; relMSE %.4g (estimated %.4g), RMSE %.4g\n",
               o.label.empty() ? o.scene.c_str() : o.label.c_str(), last.spp, last.seconds, o.width, o.height,
-              last.spp / last.seconds, last.rays / last.seconds * 1e-6, last.e.rel_mse, last.e.rmse);
+              last.spp / last.seconds, last.rays / last.seconds * 1e-6, last.e.rel_mse, last.est.rel_mse, last.e.rmse);
   std::ostringstream csv;
-  csv << "label,spp,seconds,rel_mse,rmse,rays\n";
+  csv << "label,spp,seconds,rel_mse,rmse,rays,est_rel_mse,est_rel_mse_iid,est_exponent\n";
   csv.precision(9);
-  for (const Row& row : rows)
+  for (const Row& row : rows) {
     csv << (o.label.empty() ? o.scene : o.label) << "," << row.spp << "," << row.seconds << "," << row.e.rel_mse << ","
-        << row.e.rmse << "," << row.rays << "\n";
+        << row.e.rmse << "," << row.rays << ",";
+    // The estimate (core/metrics.h), from the per-pixel variance alone, and the exponent
+    // of its decay; empty below 2 spp: no estimate yet.
+    if (row.est.known) csv << row.est.rel_mse << "," << row.est.rel_mse_iid << "," << row.est.exponent;
+    else csv << ",,";
+    csv << "\n";
+  }
   if (!o.csv.empty()) {
     const std::string text = csv.str();
     if (!write_file_atomic(o.csv, text.data(), text.size())) throw std::runtime_error("cannot write " + o.csv);

@@ -12,6 +12,7 @@
 
 #include "cli/options.h"
 #include "core/image.h"
+#include "core/metrics.h"
 #include "render/pacing.h"
 #include "gpu/gl.h"
 #include "platform/egl.h"
@@ -63,15 +64,27 @@ int run_render(const Options& o) {
   DrawPacer pacer(40.0);
   r.warm_up();  // outside the clock: the driver's first-use work
   const auto t0 = std::chrono::steady_clock::now();
-  while (!r.converged() && (o.seconds <= 0 || seconds_since(t0) < o.seconds)) {
+  int checked = 0;  // the samples when the estimate was last read (--target-relmse)
+  bool reached = false;
+  while (!r.converged() && !reached && (o.seconds <= 0 || seconds_since(t0) < o.seconds)) {
     const auto tp = std::chrono::steady_clock::now();
     const int rows = settings.band_rows > 0 ? settings.band_rows : o.height;
     const int spp = settings.spp_per_pass;
-    r.step();
+    const bool swept = r.step() > 0;
     glFinish();
+    // The estimate reads three images back: read it each time the samples grew by 1/16,
+    // in sweeps of at most that many, so the render stops within about 6% of the samples
+    // that reach the target.
+    const int n = r.samples();
+    if (o.target_relmse > 0 && swept && n >= checked + std::max(1, checked / 16)) {
+      checked = n;
+      const ErrorEstimate e = r.estimate_error();
+      reached = e.known && e.rel_mse <= o.target_relmse;
+    }
     if (o.per_pass == 0) {
       pacer.record(seconds_since(tp) * 1000.0, rows, spp);
       pacer.apply(o.height, settings);
+      if (o.target_relmse > 0) settings.spp_per_pass = std::min(settings.spp_per_pass, std::max(1, r.samples() / 16));
       r.set_settings(settings);
     }
   }
@@ -84,6 +97,13 @@ int run_render(const Options& o) {
               double(r.samples()) * o.width * o.height / secs * 1e-6, counters.rays / secs * 1e-6);
   std::printf("mean radiance: %.6f %.6f %.6f; non-finite samples: %.0f, pixels: %ld\n", st.mean.x, st.mean.y, st.mean.z,
               counters.bad_samples, st.bad);
+  const ErrorEstimate est = r.estimate_error();
+  if (reached) std::printf("target relMSE %.4g reached\n", o.target_relmse);
+  if (est.known)
+    std::printf("estimated relMSE: %.4g (the worst %dx%d tile: %.4g; from the per-pixel variance alone: %.4g)\n", est.rel_mse, est.tile,
+                est.tile, *std::max_element(est.tiles.begin(), est.tiles.end()), est.rel_mse_iid);
+  else
+    std::printf("estimated relMSE: unknown (fewer than 2 samples per pixel)\n");
   if (o.auto_exposure) {
     settings.exposure = float(auto_exposure(radiance));
     r.set_settings(settings);

@@ -33,6 +33,8 @@ const char* const kUsage =
     "  --kernel K        compute (default where the context is GL ES 3.1+, else fragment) or fragment\n"
     "                    (the WebGL 2 pass the page runs); same estimate, see docs/benchmarks.md\n"
     "render: --spp N (default 64), or until --seconds S if that comes first (references);\n"
+    "        --target-relmse X stops once the estimated relMSE (printed at the end) is at most X\n"
+    "        (then --spp, if given, and --seconds still cap it)\n"
     "        --out .png is tone-mapped, .hdr/.pfm linear radiance (--out may repeat);\n"
     "        --exposure X multiplies before the tone map, 'auto' maps the log-average to 0.18\n"
     "watch:  re-loads SCENE.xml when it or a file it references changes and re-renders to --out,\n"
@@ -105,6 +107,8 @@ Options parse_options(int argc, char** argv, bool bench) {
       o.env = next();
     } else if (!bench && a == "--spp") {
       o.spp = parse_int(next(), "--spp", 1, 1 << 24);
+    } else if (!bench && a == "--target-relmse") {
+      o.target_relmse = parse_positive(next(), "--target-relmse");
     } else if (!bench && a == "--out") {
       o.outs.push_back(next());
     } else if (!bench && a == "--exposure") {
@@ -132,7 +136,7 @@ Options parse_options(int argc, char** argv, bool bench) {
 RenderSettings settings_for(const Options& o, const Scene& scene) {
   auto given = [&](const char* flag) { return std::find(o.given.begin(), o.given.end(), flag) != o.given.end(); };
   RenderSettings s = o.settings;
-  s.sample_limit = o.spp;
+  s.sample_limit = o.target_relmse > 0 && !given("--spp") ? 1 << 24 : o.spp;  // the target ends it
   // A command line render ends: a scene's "unlimited" (samples 0) keeps --spp's default.
   const bool scene_unlimited = scene.render.samples && *scene.render.samples <= 0;
   const UserSet user{given("--bounces"), given("--mode"), given("--tonemap"), given("--exposure"),

@@ -21,6 +21,7 @@ struct Options {
   std::vector<std::string> given;  // the flags given: they win over the scene's <Render>
   // bench
   double seconds = 0;  // bench: duration (default 10); render, watch: optional time limit
+  double target_relmse = 0;  // render: stop once the estimated relMSE is at most this (0: off)
   std::string reference;         // .pfm or .hdr
   double reference_value = -1;   // a constant (analytic) reference instead
   std::string csv, label;

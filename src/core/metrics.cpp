@@ -1,5 +1,6 @@
 #include "core/metrics.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pt {
@@ -18,6 +19,70 @@ ErrorMetrics image_error(const std::vector<float>& image, const std::vector<floa
     }
   if (n == 0) return {};
   return {rel / double(n), std::sqrt(sq / double(n))};
+}
+
+ErrorSums error_terms(double mean, double variance, int samples, double snapshot) {
+  ErrorSums e;
+  e.count = 1;
+  if (samples < 2) return e;
+  const double v = std::max(variance, 0.0) / double(samples - 1);
+  const double den = mean * mean + 0.01;
+  e.iid = v / den;
+  e.diff = (mean - snapshot) * (mean - snapshot) / den;
+  return e;
+}
+
+void ErrorHistory::record(int samples, double diff_mean) {
+  if (samples < 4 || !(diff_mean > 0)) return;
+  const double x = std::log(double(samples));
+  if (!points_.empty() && !(x > points_.back().first)) return;
+  points_.push_back({x, std::log(diff_mean)});
+}
+
+double ErrorHistory::exponent() const {
+  const size_t n = points_.size(), first = n > 5 ? n - 5 : 0;
+  if (n - first < 2) return 1.0;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+  for (size_t i = first; i < n; ++i, ++m) {
+    const auto [x, y] = points_[i];
+    sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  const double slope = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+  return std::clamp(-slope, 0.5, 3.0);
+}
+
+ErrorEstimate combine_error(const std::vector<ErrorSums>& tiles, int tiles_x, int tiles_y, int tile, int samples, int k,
+                            double exponent) {
+  ErrorEstimate e;
+  e.tile = tile;
+  e.tiles_x = tiles_x;
+  e.tiles_y = tiles_y;
+  e.tiles.assign(tiles.size(), 0.0);
+  ErrorSums all;
+  for (const ErrorSums& t : tiles) all += t;
+  if (samples < 2 || all.count <= 0) return e;
+  e.known = true;
+  e.rel_mse_iid = all.iid / all.count;
+  const bool snap = k > 0 && 2 * k <= samples;
+  e.exponent = snap ? exponent : 1.0;
+  const double scale = snap ? 1.0 / (std::pow(double(samples) / k, exponent) - 1.0) : 0.0;
+  auto of = [&](const ErrorSums& t) { return t.count <= 0 ? 0.0 : (snap ? std::min(t.diff * scale, t.iid) : t.iid) / t.count; };
+  e.rel_mse = of(all);
+  for (size_t i = 0; i < tiles.size(); ++i) e.tiles[i] = of(tiles[i]);
+  return e;
+}
+
+std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
+                                   const std::vector<float>* snapshot, int width, int height, int samples, int tile) {
+  const int tx = (width + tile - 1) / tile, ty = (height + tile - 1) / tile;
+  std::vector<ErrorSums> tiles(size_t(tx) * ty);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const size_t p = (size_t(y) * width + x) * 4;
+      ErrorSums& t = tiles[size_t(y / tile) * tx + x / tile];
+      for (int c = 0; c < 3; ++c) t += error_terms(mean[p + c], variance[p + c], samples, snapshot ? (*snapshot)[p + c] : 0.0);
+    }
+  return tiles;
 }
 
 }  // namespace pt

@@ -1,4 +1,5 @@
-// Error metrics of an image against a reference, over RGB of RGBA pixels.
+// Error metrics of an image: against a reference (the true error), and estimated from the
+// render's own samples (no reference), over RGB of RGBA pixels.
 #pragma once
 #include <vector>
 
@@ -11,5 +12,75 @@ struct ErrorMetrics {
 
 // `reference` may hold one pixel (a constant image, e.g. an analytic answer).
 ErrorMetrics image_error(const std::vector<float>& image, const std::vector<float>& reference);
+
+// The relMSE above estimated without a reference, from the render's own samples
+// (docs/benchmarks.md, "The renderer's own error", measures it against the true relMSE).
+//
+// Per pixel and channel, the accumulator keeps the mean m of n samples and the samples'
+// variance s about it (sum of squared deviations / n). For independent samples
+// v = s / (n - 1) is unbiased for Var(m) = E[(m - r)^2] (r: the true value; s alone, the
+// variance of the samples about their own mean, is low by (n - 1)/n), so each term of
+// relMSE is estimated by v / (m^2 + 0.01) ("iid" below). The denominator: E[m^2] = r^2 +
+// Var(m), so m^2 overstates r^2 by the pixel's own relative error (a few per cent once
+// relMSE < 0.03), while 1/(m^2 + 0.01) is convex in m and overstates 1/(r^2 + 0.01) by
+// about three times as much: the two partly cancel, and max(m^2 - v, 0), which removes the
+// first, was measured worse (below 16 spp, a pixel whose few samples include zeros gets
+// m^2 - v = 0 and a term a hundred times too large).
+//
+// Stratified samples (the Owen-scrambled Sobol points of the camera and first bounce)
+// converge faster than 1/n where they help, and v then overstates the error (1.5 to 2.7
+// times from 16 to 256 spp in the Cornell box at 64x64). So the estimate also measures how
+// the image itself changes: with a snapshot m_k of the mean at k <= n/2 samples,
+//   E[(m_n - m_k)^2] = T(k) - T(n)   (T: the true squared error; exact for independent
+//                                     samples, and for the two halves of a scrambled net at
+//                                     k = n/2 when T falls as a power of n),
+// so with T(n) = c n^-a, T(n) = D(k, n) / ((n/k)^a - 1), D the sum of (m_n - m_k)^2 / (m^2 +
+// 0.01) over a region. The exponent a comes from the image's D(n/2, n) at the powers of
+// two n >= 4 so far (D falls as n^-a: a least-squares line through the last five in
+// log-log; 1 before there are two), and the same a serves every tile. The estimate of a
+// region is the smaller of this and iid's: stratified points are not worse than
+// independent ones, while D, one difference per term, reads low-n noise as a slow decay
+// (in the closed room of analytic/ it put a at 0.7 for a true 1.0). Without a snapshot
+// the estimate is iid's.
+
+// The sums over one region (a tile or the image) that the estimate is made of.
+struct ErrorSums {
+  double iid = 0;    // sum of v / den
+  double diff = 0;   // sum of (m - m_k)^2 / den
+  double count = 0;  // terms (pixels x 3)
+  ErrorSums& operator+=(const ErrorSums& o) {
+    iid += o.iid, diff += o.diff, count += o.count;
+    return *this;
+  }
+};
+// One pixel's channel: its mean of `samples`, their variance, the snapshot's mean.
+ErrorSums error_terms(double mean, double variance, int samples, double snapshot);
+
+// The image's D(n/2, n) / terms at powers of two n: the exponent a of the error's decay.
+class ErrorHistory {
+ public:
+  void clear() { points_.clear(); }
+  void record(int samples, double diff_mean);  // ignored below 4 samples, or if not above the last
+  double exponent() const;                      // clamped to [0.5, 3]
+ private:
+  std::vector<std::pair<double, double>> points_;  // log n, log D
+};
+
+struct ErrorEstimate {
+  bool known = false;      // at least 2 samples per pixel: before that there is no estimate
+  double rel_mse = 0;      // of the whole image
+  double rel_mse_iid = 0;  // the same from the per-pixel variance alone (independent samples)
+  double exponent = 1;     // a: the error falls as n^-a
+  int tile = 0;            // tiles of tile x tile pixels, the last row and column cut short
+  int tiles_x = 0, tiles_y = 0;
+  std::vector<double> tiles;  // relMSE per tile, rows bottom to top
+};
+// The estimate from each tile's sums (rows bottom to top) at n samples, the snapshot taken
+// at k <= n/2 samples (0: none: the iid estimate) and the exponent a.
+ErrorEstimate combine_error(const std::vector<ErrorSums>& tiles, int tiles_x, int tiles_y, int tile, int samples, int k,
+                            double exponent);
+// The tiles' sums from images: `mean`, `variance`, `snapshot` RGBA, rows bottom to top.
+std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
+                                   const std::vector<float>* snapshot, int width, int height, int samples, int tile = 32);
 
 }  // namespace pt

@@ -49,6 +49,14 @@ Framebuffer::Framebuffer(const Texture& color0, const Texture& color1) : Framebu
   PT_GL_CHECK("glFramebufferTexture2D/glDrawBuffers");
 }
 
+Framebuffer::Framebuffer(const Texture& color0, const Texture& color1, const Texture& color2) : Framebuffer(color0) {
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, color1.id(), 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, color2.id(), 0);
+  const GLenum bufs[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glDrawBuffers(3, bufs);
+  PT_GL_CHECK("glFramebufferTexture2D/glDrawBuffers");
+}
+
 bool Framebuffer::complete() const {
   glBindFramebuffer(GL_FRAMEBUFFER, id_);
   return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;

@@ -42,6 +42,8 @@ class Framebuffer {
   explicit Framebuffer(const Texture& color);
   // Two colour attachments, both drawn to (multiple render targets).
   Framebuffer(const Texture& color0, const Texture& color1);
+  // Three colour attachments, all drawn to.
+  Framebuffer(const Texture& color0, const Texture& color1, const Texture& color2);
   ~Framebuffer() { reset(); }
   Framebuffer(Framebuffer&& o) noexcept : id_(std::exchange(o.id_, 0u)) {}
   Framebuffer& operator=(Framebuffer&& o) noexcept {

@@ -28,7 +28,8 @@ void Accumulator::resize(int width, int height) {
   for (int i = 0; i < 2; ++i) {
     accum_[i] = Texture(width, height, format_, nullptr);
     stats_[i] = Texture(width, height, format_, nullptr);
-    fbo_[i] = Framebuffer(accum_[i], stats_[i]);
+    var_[i] = Texture(width, height, format_, nullptr);
+    fbo_[i] = Framebuffer(accum_[i], stats_[i], var_[i]);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   restart();
@@ -52,6 +53,7 @@ Accumulator::Tile Accumulator::begin_tile(const RenderSettings& s) {
       glBindFramebuffer(GL_FRAMEBUFFER, f.id());
       glClearBufferfv(GL_COLOR, 0, zero);
       glClearBufferfv(GL_COLOR, 1, zero);
+      glClearBufferfv(GL_COLOR, 2, zero);
       PT_GL_CHECK("glClearBufferfv");
     }
     needs_clear_ = false;
@@ -62,12 +64,23 @@ Accumulator::Tile Accumulator::begin_tile(const RenderSettings& s) {
 void Accumulator::bind_inputs(Program& p, const Tile& t) const {
   p.set("u_accum", int(kAccumUnit));
   p.set("u_stats_in", int(kStatsUnit));
+  p.set("u_var_in", int(kVarianceUnit));
   p.set("u_spp", t.spp);
   p.set("u_sample_base", samples_);
   p.set("u_blend", float(t.spp) / float(samples_ + t.spp));
   accum_[cur_].bind(kAccumUnit);
   stats_[cur_].bind(kStatsUnit);
+  var_[cur_].bind(kVarianceUnit);
 }
+
+#ifndef __EMSCRIPTEN__
+void Accumulator::bind_images() const {
+  glBindImageTexture(0, accum_[1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, stats_[1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(2, var_[1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  PT_GL_CHECK("glBindImageTexture (accumulator)");
+}
+#endif
 
 int Accumulator::end_tile(const Tile& t) {
   if (t.whole) {
@@ -78,16 +91,16 @@ int Accumulator::end_tile(const Tile& t) {
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_[1 - cur_].id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_[cur_].id());
-    for (int a = 0; a < 2; ++a) {
-      const GLenum bufs[2] = {a == 0 ? GLenum(GL_COLOR_ATTACHMENT0) : GLenum(GL_NONE),
-                              a == 1 ? GLenum(GL_COLOR_ATTACHMENT1) : GLenum(GL_NONE)};
+    for (int a = 0; a < 3; ++a) {
+      GLenum bufs[3] = {GL_NONE, GL_NONE, GL_NONE};
+      bufs[a] = GLenum(GL_COLOR_ATTACHMENT0 + a);
       glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + a));
-      glDrawBuffers(2, bufs);
+      glDrawBuffers(3, bufs);
       glBlitFramebuffer(t.x0, t.y0, t.x1, t.y1, t.x0, t.y0, t.x1, t.y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
       PT_GL_CHECK("glBlitFramebuffer (tile copy-back)");
     }
-    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glDrawBuffers(2, both);
+    const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glDrawBuffers(3, all);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -107,6 +120,17 @@ std::vector<float> Accumulator::read_radiance() const {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur_].id());
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
   PT_GL_CHECK("glReadPixels (radiance)");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return out;
+}
+
+std::vector<float> Accumulator::read_variance() const {
+  std::vector<float> out(size_t(width_) * height_ * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur_].id());
+  glReadBuffer(GL_COLOR_ATTACHMENT2);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
+  PT_GL_CHECK("glReadPixels (variance)");
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return out;
 }

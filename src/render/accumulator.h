@@ -1,6 +1,8 @@
 // The running mean of radiance: two float targets in ping-pong (a draw reads one and
 // writes the other, which blends its samples into the mean), each with a statistics
-// attachment (NaN/Inf samples and rays, counted in the shader). A sweep adds samples to
+// attachment (NaN/Inf samples and rays, counted in the shader) and a variance attachment
+// (per RGB channel, the variance of the pixel's samples about their mean, combined pass by
+// pass in the shader: camera_pass.glsl; the error estimate reads it, core/metrics.h). A sweep adds samples to
 // every pixel; it may be drawn as bands of rows and a band as tiles of columns, the tile
 // copied back into the target it read (a blit), so the pair agrees again without a swap.
 #pragma once
@@ -32,10 +34,12 @@ class Accumulator {
   int height() const { return height_; }
   void restart() {
     samples_ = 0;
+    ++epoch_;
     next_row_ = next_column_ = 0;
     needs_clear_ = true;
   }
   int samples() const { return samples_; }
+  int epoch() const { return epoch_; }  // counts restarts: an estimate from another image is stale
   bool mid_sweep() const { return next_row_ != 0 || next_column_ != 0; }
 
   // The pixels and samples per pixel of one draw.
@@ -49,19 +53,30 @@ class Accumulator {
   // The program's accumulator inputs (the mean so far, its statistics) and blend.
   void bind_inputs(Program& p, const Tile& t) const;
   GLuint target_fbo() const { return fbo_[1 - cur_].id(); }  // where the draw writes
+  GLuint current_fbo() const { return fbo_[cur_].id(); }     // the current mean (attachment 0)
   const Texture& target_radiance() const { return accum_[1 - cur_]; }
   const Texture& target_stats() const { return stats_[1 - cur_]; }
+  const Texture& target_variance() const { return var_[1 - cur_]; }
+#ifndef __EMSCRIPTEN__
+  // The compute kernel's outputs: the targets as images 0 (mean), 1 (statistics), 2 (variance).
+  void bind_images() const;
+#endif
   // After the draw: swap or copy the tile back, move on; the samples per pixel added when
   // the tile completed a sweep, else 0.
   int end_tile(const Tile& t);
 
   const Texture& radiance() const { return accum_[cur_]; }  // the current mean (display)
+  const Texture& variance() const { return var_[cur_]; }    // the samples' variance about it
   std::vector<float> read_radiance() const;  // RGB radiance, A mean squared luminance; rows bottom to top
+  // Per pixel, RGB: the variance of its samples about their mean (sum of squared
+  // deviations / samples, the biased sample variance); A: 0. Rows bottom to top.
+  std::vector<float> read_variance() const;
   RenderCounters counters() const;
 
  private:
   Texture accum_[2];
   Texture stats_[2];
+  Texture var_[2];
   Framebuffer fbo_[2];
   GLenum format_ = GL_RGBA32F;
   int cur_ = 0;
@@ -70,6 +85,7 @@ class Accumulator {
   int next_column_ = 0;   // this 0 too, a new sweep starts; else the band's next tile
   int band_end_ = 0;      // the row after the band in progress (fixed while it lasts)
   int sweep_spp_ = 1;     // samples per pixel of the sweep in progress
+  int epoch_ = 0;
   bool needs_clear_ = true;
   int width_ = 0, height_ = 0;
 };

@@ -173,8 +173,7 @@ int Renderer::step() {
   accum_.bind_inputs(p, t);
   if (using_compute()) {
 #ifndef __EMSCRIPTEN__
-    glBindImageTexture(0, accum_.target_radiance().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, accum_.target_stats().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    accum_.bind_images();
     p.set("u_origin", glm::ivec2(t.x0, t.y0));
     p.set("u_end", glm::ivec2(t.x1, t.y1));
     glDispatchCompute(GLuint((t.x1 - t.x0 + 7) / 8), GLuint((t.y1 - t.y0 + 7) / 8), 1);
@@ -199,12 +198,15 @@ int Renderer::step() {
     PT_GL_CHECK("glDrawArrays (integrator)");
   }
   last_draw_samples_ = long(t.x1 - t.x0) * (t.y1 - t.y0) * t.spp;
-  return accum_.end_tile(t);
+  const int added = accum_.end_tile(t);
+  if (added > 0) error_.sweep_done(accum_);
+  return added;
 }
 
 void Renderer::display(int x, int y) const { display_.draw(accum_.radiance(), settings_.tonemap, settings_.exposure, x, y, vao_); }
 
 std::vector<float> Renderer::read_radiance() const { return accum_.read_radiance(); }
+std::vector<float> Renderer::read_variance() const { return accum_.read_variance(); }
 
 std::vector<uint8_t> Renderer::read_display() const {
   return display_.read(accum_.radiance(), settings_.tonemap, settings_.exposure, vao_);

@@ -12,6 +12,7 @@
 #include "core/tonemap.h"
 #include "render/accumulator.h"
 #include "render/display.h"
+#include "render/error_estimator.h"
 #include "render/program_cache.h"
 #include "render/scene_textures.h"
 #include "scene/scene.h"
@@ -124,6 +125,11 @@ class Renderer {
 
   // Linear radiance (RGB) and mean squared luminance (A), rows bottom to top.
   std::vector<float> read_radiance() const;
+  // Per pixel RGB, the variance of its samples about their mean (biased: / samples); A 0.
+  std::vector<float> read_variance() const;
+  // The estimated relMSE of the current mean, whole image and per tile (reads back three
+  // float images; core/metrics.h says how it is estimated).
+  ErrorEstimate estimate_error() const { return error_.estimate(accum_); }
   // Tone-mapped 8-bit RGBA, rows bottom to top.
   std::vector<uint8_t> read_display() const;
   using Counters = RenderCounters;  // totals since the last restart, counted in the shader
@@ -136,6 +142,7 @@ class Renderer {
   GLuint vao_ = 0;        // the fullscreen triangle's (no attributes)
   Display display_;
   Accumulator accum_;
+  ErrorEstimator error_;  // snapshots of accum_'s mean for its error estimate
   SceneTextures scene_;
   ProgramCache programs_;
   Features features_;

@@ -1,0 +1,87 @@
+// Snapshots and readbacks of the error estimate (render/error_estimator.h).
+#include "render/error_estimator.h"
+
+#include "render/accumulator.h"
+
+namespace pt {
+
+namespace {
+
+std::vector<float> read_rgba(GLuint fbo, GLenum attachment, int w, int h) {
+  std::vector<float> out(size_t(w) * h * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glReadBuffer(attachment);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out.data());
+  PT_GL_CHECK("glReadPixels (error estimate)");
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return out;
+}
+
+}  // namespace
+
+void ErrorEstimator::reset(const Accumulator& a) {
+  epoch_ = a.epoch();
+  if (a.width() != width_ || a.height() != height_) {
+    width_ = a.width();
+    height_ = a.height();
+    for (Snapshot& s : snaps_) {
+      s.mean = Texture(width_, height_, a.format(), nullptr);
+      s.fbo = Framebuffer(s.mean);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+  for (Snapshot& s : snaps_) s.samples = 0;
+  older_ = 0;
+  next_ = 1;
+  history_.clear();
+}
+
+const ErrorEstimator::Snapshot* ErrorEstimator::usable(int samples) const {
+  const Snapshot* best = nullptr;
+  for (const Snapshot& s : snaps_)
+    if (s.samples > 0 && 2 * s.samples <= samples && (!best || s.samples > best->samples)) best = &s;
+  return best;
+}
+
+std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot* s) const {
+  const int w = a.width(), h = a.height();
+  const std::vector<float> mean = read_rgba(a.current_fbo(), GL_COLOR_ATTACHMENT0, w, h);
+  const std::vector<float> var = read_rgba(a.current_fbo(), GL_COLOR_ATTACHMENT2, w, h);
+  std::vector<float> snap;
+  if (s) snap = read_rgba(s->fbo.id(), GL_COLOR_ATTACHMENT0, w, h);
+  return error_tiles(mean, var, s ? &snap : nullptr, w, h, a.samples(), kTile);
+}
+
+void ErrorEstimator::sweep_done(const Accumulator& a) {
+  if (a.epoch() != epoch_ || a.width() != width_ || a.height() != height_) reset(a);
+  const int n = a.samples();
+  if (n < next_) return;
+  // The change since the half-way snapshot, at a power of two: the decay's next point.
+  const Snapshot* half = usable(n);
+  if (half && 2 * half->samples == n && n >= 4) {
+    ErrorSums all;
+    for (const ErrorSums& t : sums(a, half)) all += t;
+    history_.record(n, all.diff / all.count);
+  }
+  Snapshot& s = snaps_[older_];
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, a.current_fbo());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.fbo.id());
+  glDisable(GL_SCISSOR_TEST);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  PT_GL_CHECK("glBlitFramebuffer (error snapshot)");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  s.samples = n;
+  older_ = 1 - older_;
+  while (next_ <= n) next_ *= 2;
+}
+
+ErrorEstimate ErrorEstimator::estimate(const Accumulator& a) const {
+  const bool current = a.epoch() == epoch_ && a.width() == width_ && a.height() == height_;
+  const Snapshot* s = current ? usable(a.samples()) : nullptr;
+  const int tx = (a.width() + kTile - 1) / kTile, ty = (a.height() + kTile - 1) / kTile;
+  return combine_error(sums(a, s), tx, ty, kTile, a.samples(), s ? s->samples : 0, current ? history_.exponent() : 1.0);
+}
+
+}  // namespace pt

@@ -1,0 +1,43 @@
+// The renderer's estimate of its own error (issue 14): the relMSE of the running mean
+// against the image it converges to, for the whole image and per tile, with no reference.
+// The per-pixel variance comes from the accumulator (accumulated in the integrator's
+// pass, both kernels); this keeps snapshots of the mean at the powers of two of the
+// sample count and the decay of the image's change between them; the estimator itself,
+// its derivation and its calibration are core/metrics.h's.
+#pragma once
+#include <vector>
+
+#include "core/metrics.h"
+#include "gpu/texture.h"
+
+namespace pt {
+
+class Accumulator;
+
+class ErrorEstimator {
+ public:
+  static constexpr int kTile = 32;  // pixels per side of the per-tile estimate
+  // After every completed sweep (Renderer::step): at the first sweep end at or past each
+  // power of two it records the change since the last one and keeps a copy of the mean.
+  void sweep_done(const Accumulator& a);
+  // Reads the mean, variance and snapshot back (three float images: a CLI's end, a
+  // page's readout every few seconds; the cost is measured in docs/benchmarks.md).
+  ErrorEstimate estimate(const Accumulator& a) const;
+
+ private:
+  struct Snapshot {
+    Texture mean;
+    Framebuffer fbo;
+    int samples = 0;
+  };
+  void reset(const Accumulator& a);
+  const Snapshot* usable(int samples) const;  // the latest with samples <= n/2
+  std::vector<ErrorSums> sums(const Accumulator& a, const Snapshot* s) const;
+  Snapshot snaps_[2];
+  int older_ = 0;  // the slot the next snapshot replaces
+  int next_ = 1;   // the sample count of the next snapshot
+  int epoch_ = -1, width_ = 0, height_ = 0;
+  ErrorHistory history_;
+};
+
+}  // namespace pt

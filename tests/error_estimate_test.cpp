@@ -1,0 +1,124 @@
+// The renderer's own error (issue 14): the per-pixel variance the integrator accumulates
+// in both kernels, and the estimated relMSE (core/metrics.h) against the true one.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/metrics.h"
+#include "gl_context.h"
+#include "scene/xml_loader.h"
+#include "scene_builders.h"
+#include "test_paths.h"
+
+using namespace pt;
+
+namespace {
+
+// An emitting sphere (radiance 1, 0.25, 0) on black, nothing that scatters: every sample
+// of a pixel is 0 or the sphere's radiance, so the samples' variance about their mean m
+// is exactly m (L - m) per channel, whatever the order and grouping of the samples.
+Scene binary_scene() {
+  Scene s;
+  s.camera = camera_looking_down_z(glm::vec3(0.0f, 0.0f, 3.0f));
+  s.environment.color = glm::vec3(0.0f);
+  Material emit = Emit{};
+  emit.emission = glm::vec3(1.0f, 0.25f, 0.0f);
+  add_sphere(s, glm::vec3(0.1f, -0.05f, 0.0f), 0.7f, add_material(s, emit));
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("per-pixel variance: the samples' variance in both kernels, whole and in passes and tiles", "[gpu][error]") {
+  test_gl();
+  const Scene scene = binary_scene();
+  const glm::vec3 L(1.0f, 0.25f, 0.0f);
+  struct Case {
+    bool compute;
+    int per_pass, rows, columns;
+  };
+  for (const Case c : {Case{false, 13, 0, 0}, Case{false, 3, 0, 0}, Case{false, 1, 5, 7}, Case{true, 3, 0, 0}, Case{true, 2, 6, 9}}) {
+    Renderer r;
+    r.resize(24, 20);
+    RenderSettings st;
+    st.compute = c.compute;
+    st.sample_limit = 13;
+    st.spp_per_pass = c.per_pass;
+    st.band_rows = c.rows;
+    st.band_columns = c.columns;
+    r.set_settings(st);
+    r.set_scene(scene);
+    while (!r.converged()) r.step();
+    const std::vector<float> mean = r.read_radiance(), var = r.read_variance();
+    double worst = 0;
+    int partial = 0;
+    for (size_t i = 0; i < mean.size(); i += 4) {
+      partial += mean[i] > 0.05f && mean[i] < 0.95f;
+      for (int ch = 0; ch < 3; ++ch) worst = std::max(worst, std::abs(double(var[i + ch]) - mean[i + ch] * (L[ch] - mean[i + ch])));
+    }
+    INFO("compute " << c.compute << ", " << c.per_pass << " spp per pass, bands " << c.rows << "x" << c.columns);
+    CHECK(r.using_compute() == c.compute);
+    CHECK(partial >= 10);    // pixels on the sphere's edge: a variance that is not 0
+    CHECK(worst < 2e-6);     // m (L - m) at most 0.25: float rounding
+  }
+}
+
+namespace {
+
+// Renders `scene` to each of `checkpoints` spp (continuing) and compares the estimate with
+// the true relMSE against `ref` (RGBA, or one pixel: a constant).
+void check_calibration(const Scene& scene, int w, int h, RenderSettings st, const std::vector<float>& ref,
+                       const std::vector<int>& checkpoints, double tolerance) {
+  Renderer r;
+  r.resize(w, h);
+  st.spp_per_pass = 1;
+  r.set_scene(scene);
+  for (int n : checkpoints) {
+    st.sample_limit = n;
+    r.set_settings(st);
+    while (!r.converged()) {
+      st.spp_per_pass = std::min(n - r.samples(), std::max(1, r.samples()));  // sweeps end on every power of two
+      r.set_settings(st);
+      r.step();
+    }
+    const double truth = image_error(r.read_radiance(), ref).rel_mse;
+    const ErrorEstimate e = r.estimate_error();
+    std::printf("  %4d spp: relMSE %.4g, estimated %.4g (%.2f; per-pixel variance alone %.4g, exponent %.2f)\n", n, truth,
+                e.rel_mse, e.rel_mse / truth, e.rel_mse_iid, e.exponent);
+    INFO(n << " spp: true " << truth << ", estimated " << e.rel_mse);
+    REQUIRE(e.known);
+    CHECK(std::abs(e.rel_mse / truth - 1.0) < tolerance);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("error estimate: within 25% of the true relMSE from 16 spp on (closed room, exact answer)", "[gpu][error]") {
+  test_gl();
+  Scene scene = load_scene_file(repo_path("scenes/analytic/closed-room.xml"));
+  RenderSettings st;
+  st.max_bounces = 64;  // the answer 2 - 2^-64
+  std::printf("closed room, 32x32, against the exact value 2:\n");
+  check_calibration(scene, 32, 32, st, std::vector<float>(4, 2.0f), {16, 32, 64, 128}, 0.25);
+}
+
+TEST_CASE("error estimate: tiles and the image agree, and there is no estimate below 2 spp", "[error]") {
+  // 40x36 pixels in 32-pixel tiles: 2x2 tiles, the last row and column cut short.
+  const int w = 40, h = 36;
+  std::vector<float> mean(size_t(w) * h * 4, 0.5f), var(mean.size(), 0.0f);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) var[(size_t(y) * w + x) * 4 + c] = x >= 32 ? 0.9f : 0.09f;
+  const int n = 10;
+  const ErrorEstimate e = combine_error(error_tiles(mean, var, nullptr, w, h, n), 2, 2, 32, n, 0, 1.0);
+  REQUIRE(e.known);
+  const double lo = 0.09 / (n - 1) / (0.25 + 0.01), hi = 0.9 / (n - 1) / (0.25 + 0.01);
+  CHECK(e.tiles[0] == Approx(lo));
+  CHECK(e.tiles[1] == Approx(hi));
+  CHECK(e.tiles[2] == Approx(lo));
+  CHECK(e.tiles[3] == Approx(hi));
+  CHECK(e.rel_mse == Approx((32.0 * lo + 8.0 * hi) / 40.0));
+  CHECK_FALSE(combine_error(error_tiles(mean, var, nullptr, w, h, 1), 2, 2, 32, 1, 0, 1.0).known);
+}
