@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh, kernels or variants}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels, variants or wave2}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -113,6 +113,20 @@ case "$part" in
     for flags in "--sampler independent" "--no-nee" "--bounces 1" "--kernel fragment"; do
       echo "== $(basename "$last") million $flags"
       $last render scenes/bench/million.xml --size $S --spp 100000 --seconds 5 $flags --out /tmp/m.png | grep -E "rendered"
+    done
+    ;;
+  wave2)
+    # The second wave's costs, builds side by side (build/bench/pt-NAME, carried): each
+    # scene at 1080p for 5 s in both kernels (the per-pixel variance target, the glTF
+    # BSDF against the old stand-in on the glTF scenes, the per-kind records).
+    for v in build/bench/pt-*; do
+      for s in scenes/cornell-box.xml scenes/reference/scene2.xml scenes/reference/scene0.xml scenes/gltf-instances.xml \
+               scenes/gltf/mr-grid.xml scenes/gltf/maps-quad.xml scenes/bench/million.xml; do
+        for k in compute fragment; do
+          echo "== $(basename "$v") $(basename "$s" .xml) $k"
+          $v render "$s" --size $S --spp 100000 --seconds 5 --kernel $k --out /tmp/w.png | grep -E "shader|rendered|non-finite|estimated"
+        done
+      done
     done
     ;;
 esac
