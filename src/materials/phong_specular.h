@@ -18,6 +18,9 @@ struct PhongSpecular {
 
   void parse(MaterialParse& p) {
     n = p.attrs.number("n");
+    // Above 1e5 the lobe (width about 1 / sqrt(n) radians) is too narrow for float: the
+    // cosines next to 1 are 6e-8 apart, so cos^n of the nearest one below 1 is
+    // exp(-6e-8 n) and the sampled lobe no longer integrates to its albedo.
     if (!(n >= 0.0f) || n > 1e5f) p.attrs.fail("'n' must be in [0, 100000]");
     color = p.attrs.vec3("color", glm::vec3(1.0f));
   }
