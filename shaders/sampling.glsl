@@ -38,7 +38,20 @@ vec3 sample_uniform_cone(vec2 u, float one_minus_cos_max) {
   return vec3(sin_t * cos(phi), sin_t * sin(phi), cos_t);
 }
 
+// The weight of technique a against b. A density's square overflows float above 1.8e19
+// (a small light seen from far: 1 / (2 pi (1 - cos)) reaches 1e24), and inf / inf is NaN:
+// there the weight is taken in the form of the ratio of the two, which never overflows
+// (below 1e18 the direct form, so images stay the same bit for bit).
 float power_heuristic(float pdf_a, float pdf_b) {
+  if (max(pdf_a, pdf_b) > 1e18) {
+    if (!(pdf_a > 0.0)) return 0.0;
+    if (pdf_a >= pdf_b) {
+      float r = pdf_b / pdf_a;
+      return 1.0 / (1.0 + r * r);
+    }
+    float r = pdf_a / pdf_b;
+    return r * r / (1.0 + r * r);
+  }
   float a = pdf_a * pdf_a;
   float b = pdf_b * pdf_b;
   return a + b > 0.0 ? a / (a + b) : 0.0;
