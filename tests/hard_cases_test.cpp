@@ -323,9 +323,11 @@ TEST_CASE("tiny lights over a floor: every next-event estimate is finite", "[gpu
 }
 
 TEST_CASE("PhongSpecular of exponent 0: the lobe is finite where wi is 90 degrees or more from the mirror direction", "[gpu][hard][nan]") {
-  // cos^0 at a cosine of 0 was pow(0, 0), which GLSL leaves undefined (pow is exp2(y log2 x):
-  // 0 * -inf, NaN on NVIDIA's and other drivers); the lobe lives where the cosine is
-  // positive: 0 outside, 1 / (2 pi) inside. Textured's Phong lobe is this function.
+  // cos^0 at a cosine of 0 was pow(0, 0), which GLSL leaves undefined (pow is commonly
+  // exp2(y log2 x): 0 * -inf); the lobe lives where the cosine is positive: 0 outside,
+  // 1 / (2 pi) inside. Textured's Phong lobe is this function. llvmpipe happens to give
+  // pow(0, 0) = 0, so here this passed before the fix too; it prints the driver's value
+  // (the last column), and fails on a driver that gives NaN or 1 without the fix.
   GlslKernel k(glsl_material(PhongSpecular{.n = 0.0f}) +
                "vec4 kernel(vec4 x, int i) {\n"
                "  float a = 1.0471976;  // wo 60 degrees from the normal\n"
@@ -361,6 +363,24 @@ TEST_CASE("mesh barycentrics of a tiny triangle are finite", "[gpu][hard][nan]")
   const std::vector<glm::vec4> out = k.run({{0, 0, 0, 1.0f}, {0, 0, 0, 1e-5f}, {0, 0, 0, 1e-8f}, {0, 0, 0, 1e-10f}, {0, 0, 0, 1e-15f}});
   for (const glm::vec4& o : out) {
     std::printf("tiny triangle barycentrics: %g %g %g (sum %g)\n", double(o.x), double(o.y), double(o.z), double(o.w));
+    CHECK(std::isfinite(o.x + o.y + o.z));
+    CHECK(o.w == Approx(1.0).epsilon(1e-4));
+    CHECK(o.x == Approx(1.0 / 3.0).epsilon(1e-3));
+  }
+}
+
+TEST_CASE("a lone triangle's barycentrics (its uv) are finite when it is tiny", "[gpu][hard][nan]") {
+  // The Gram determinant d00 d11 - d01^2 is of the fourth power of the size: below edges of
+  // about 1e-10 it left float's normal range and v, w were x / 0 (NaN uv, NaN texture).
+  GlslKernel k(
+      "vec4 kernel(vec4 x, int i) {\n"
+      "  ShapeRec s; s.kind = SHAPE_TRIANGLE;\n"
+      "  s.a = x.w * vec3(1.0, 2.0, 3.0); s.b = s.a + x.w * vec3(1.0, 0.0, 0.0); s.c = s.a + x.w * vec3(0.3, 1.0, 0.2);\n"
+      "  vec3 b = barycentric_triangle(s, (s.a + s.b + s.c) / 3.0);\n"
+      "  return vec4(b, b.x + b.y + b.z);\n}\n");
+  const std::vector<glm::vec4> out = k.run({{0, 0, 0, 1.0f}, {0, 0, 0, 1e-5f}, {0, 0, 0, 1e-9f}, {0, 0, 0, 1e-11f}, {0, 0, 0, 1e-15f}});
+  for (const glm::vec4& o : out) {
+    std::printf("tiny lone triangle barycentrics: %g %g %g (sum %g)\n", double(o.x), double(o.y), double(o.z), double(o.w));
     CHECK(std::isfinite(o.x + o.y + o.z));
     CHECK(o.w == Approx(1.0).epsilon(1e-4));
     CHECK(o.x == Approx(1.0 / 3.0).epsilon(1e-3));
