@@ -66,7 +66,7 @@ for s in "${scenes[@]}"; do
     o="$out/out/$(echo "$name" | tr '/' '-')-$k.txt"
     time_args=()
     [[ "$seconds" != 0 ]] && time_args=(--seconds "$seconds")
-    (cd "$repo" && "$bin" render "$s" --size "$size" "${time_args[@]}" --spp "$spp" --kernel "$k" --out "$out/last.png") >"$o" 2>&1
+    (cd "$repo" && "$bin" render "$s" --size "$size" ${time_args[@]+"${time_args[@]}"} --spp "$spp" --kernel "$k" --out "$out/last.png") >"$o" 2>&1
     rc=$?
     python3 - "$o" "$name" "$k" "$rc" "$size" >>"$log" <<'EOF'
 import re, sys
