@@ -36,7 +36,9 @@ bool light_sample(vec3 p, vec3 u, out LightSample ls) {
   if (u_num_lights == 0) return false;
   int li = min(int(u.z * float(u_num_lights)), u_num_lights - 1);
   LightRec l = load_light(li);
-  if (!light_sample_shape(load_shape(l.shape), p, u.xy, ls.wi, ls.pdf, ls.dist) || !(ls.pdf > 0.0)) return false;
+  // A direction of infinite density (a light too small for float seen from far) carries
+  // radiance / pdf = 0: no sample, rather than inf / inf in the weights.
+  if (!light_sample_shape(load_shape(l.shape), p, u.xy, ls.wi, ls.pdf, ls.dist) || !(ls.pdf > 0.0 && ls.pdf < T_INF)) return false;
   ls.pdf *= (1.0 - pe) / float(u_num_lights);
   ls.radiance = l.radiance;
   ls.shape = l.shape;

@@ -38,16 +38,23 @@ vec3 sample_uniform_cone(vec2 u, float one_minus_cos_max) {
   return vec3(sin_t * cos(phi), sin_t * sin(phi), cos_t);
 }
 
+// The weight of technique a against b. A density's square overflows float above 1.8e19
+// (a small light seen from far: t^2 / (cos A) or 1 / (2 pi (1 - cos)) reaches 1e24), and
+// inf / inf is NaN; a tiny one's underflows to 0. There the weight is taken in the form of
+// the ratio of the two, which never overflows (otherwise the direct form, so images stay
+// the same bit for bit).
 float power_heuristic(float pdf_a, float pdf_b) {
   float a = pdf_a * pdf_a;
   float b = pdf_b * pdf_b;
-  // The squares of large densities (above ~1.8e19: a far point's density towards a small
-  // emitter, t^2 / (cos A)) overflow, and inf / inf made a NaN weight; those of tiny ones
-  // (below ~1e-19) underflow to 0. Then the ratio form 1 / (1 + (pdf_b / pdf_a)^2).
-  if (pdf_a > 0.0 && (isinf(a + b) || !(a + b > 0.0))) {
+  if (max(pdf_a, pdf_b) > 1e18 || (pdf_a > 0.0 && !(a + b > 0.0))) {
+    if (!(pdf_a > 0.0)) return 0.0;
     if (isinf(pdf_a)) return isinf(pdf_b) ? 0.5 : 1.0;
-    float r = pdf_b / pdf_a;
-    return 1.0 / (1.0 + r * r);
+    if (pdf_a >= pdf_b) {
+      float r = pdf_b / pdf_a;
+      return 1.0 / (1.0 + r * r);
+    }
+    float r = pdf_a / pdf_b;
+    return r * r / (1.0 + r * r);
   }
   return a + b > 0.0 ? a / (a + b) : 0.0;
 }

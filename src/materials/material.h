@@ -119,7 +119,8 @@ struct KindComposite : std::false_type {};
 template <class K>
 struct KindComposite<K, std::void_t<decltype(K::kComposite)>> : std::bool_constant<K::kComposite> {};
 
-// An index of refraction: in (0, 100].
+// An index of refraction: in [kMinIor, kMaxMagnitude] (material.cpp says why).
+inline constexpr float kMinIor = 1e-9f;
 float parse_ior(XmlAttrs& a, const char* name, float fallback);
 
 }  // namespace pt

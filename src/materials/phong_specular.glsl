@@ -11,7 +11,9 @@ vec3 eval_phong_specular(MaterialRec m, vec3 wo, vec3 wi, bool entering, out flo
   if (wi.z <= 0.0 || wo.z <= 0.0) return vec3(0.0);
   float n = phong_specular_rec(m).exponent;
   float c = max(dot(wi, vec3(-wo.x, -wo.y, wo.z)), 0.0);
-  float lobe = pow(c, n) * INV_PI * 0.5;
+  // The lobe lives where c > 0; pow(0, 0) (n = 0) is undefined in GLSL (exp2(0 * -inf):
+  // NaN on some drivers), so c = 0 is not passed to it.
+  float lobe = c > 0.0 ? pow(c, n) * INV_PI * 0.5 : 0.0;
   pdf = (n + 1.0) * lobe;
   return m.tint * ((n + 2.0) * lobe * wi.z);
 }

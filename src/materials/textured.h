@@ -36,10 +36,10 @@ struct Textured {
     specular = p.loader.image_map(a, "specular", false);
     normal = p.loader.image_map(a, "normal", true);
     n = a.number("n", 50.0f);
-    if (!(n > 0.0f) || n > 1e5f) a.fail("'n' must be in (0, 100000]");
+    // As PhongSpecular's n (phong_specular.h says why 1e5).
+    if (!(n >= 0.0f) || n > 1e5f) a.fail("'n' must be in [0, 100000]");
     uvScale = a.has("uvScale") ? a.vec2("uvScale") : glm::vec2(1.0f);
     uvOffset = a.has("uvOffset") ? a.vec2("uvOffset") : glm::vec2(0.0f);
-    if (uvScale.x == 0.0f || uvScale.y == 0.0f) a.fail("'uvScale' must be non-zero");
   }
   void pack(MaterialWriter& w) const {
     w.set(rec::map_diffuse, diffuse);

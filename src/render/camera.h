@@ -13,11 +13,7 @@ struct CameraBasis {
   glm::vec3 position, forward, right, up;  // right/up scaled by the half-extent of the image plane
 };
 
-inline glm::vec3 camera_forward(const Camera& c) {
-  const float y = glm::radians(c.yaw), p = glm::radians(c.pitch);
-  return glm::vec3(-std::cos(y) * std::cos(p), std::sin(p), -std::sin(y) * std::cos(p));
-}
-
+// camera_forward(c): scene/scene.h (the loader checks the view against 'up' with it).
 inline CameraBasis camera_basis(const Camera& c, float aspect) {
   const glm::vec3 f = camera_forward(c);
   const glm::vec3 r = glm::normalize(glm::cross(f, c.up));

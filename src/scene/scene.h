@@ -2,6 +2,7 @@
 // Units are the scene file's own. Radiance of emitters: see docs/scene-format.md
 // ("intensity" is radiance per unit colour, the same map for lights and Emit).
 #pragma once
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -78,6 +79,12 @@ struct Camera {
   float focal_distance = 1.0f;   // distance of the plane in focus along the view direction
   float shutter = 0.0f;          // the shutter is open over [0, shutter] (motion blur)
 };
+
+// The view direction (unit): yaw 180 looks down +x, 90 down -z (render/camera.h's basis).
+inline glm::vec3 camera_forward(const Camera& c) {
+  const float y = glm::radians(c.yaw), p = glm::radians(c.pitch);
+  return glm::vec3(-std::cos(y) * std::cos(p), std::sin(p), -std::sin(y) * std::cos(p));
+}
 
 // An equirectangular HDR image, rows top (theta = 0, +y) to bottom, RGBA float.
 struct EnvImage {

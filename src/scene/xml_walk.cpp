@@ -152,7 +152,10 @@ void Loader::camera(const XMLElement* e) {
   c.up = glm::normalize(c.up);
   c.yaw = a.number("yaw", 0.0f);
   c.pitch = a.number("pitch", 0.0f);
-  if (std::abs(c.pitch) >= 90.0f) a.fail("'pitch' must be within (-90, 90) degrees");
+  // Any angle is a view (pitch 90 looks straight up, beyond it the image is upside down,
+  // as in the 2016 program); only a view along 'up' has no right vector (camera_basis).
+  if (!(glm::length(glm::cross(camera_forward(c), c.up)) > 1e-9f))
+    a.fail("the view direction (yaw, pitch) is parallel to 'up': no image orientation");
   // Extensions: a thin lens and a shutter interval.
   c.aperture = a.number("aperture", 0.0f);
   c.focal_distance = a.number("focalDistance", 1.0f);
@@ -213,7 +216,7 @@ void Loader::render_settings(const XMLElement* e) {
   }
   if (a.has("exposure")) {
     r.exposure = a.number("exposure");
-    if (!(*r.exposure > 0.0f && *r.exposure <= 1000.0f)) a.fail("'exposure' must be in (0, 1000]");
+    if (!(*r.exposure > 0.0f)) a.fail("'exposure' must be positive");
   }
   a.finish();
   if (e->FirstChildElement()) a.fail("takes no child elements");
@@ -269,7 +272,7 @@ void Loader::environment(const XMLElement* e) {
     en.map = load_env_image(env, en.map_path);
     en.rotation = env.number("rotation", 0.0f);
     en.intensity = env.number("intensity", 1.0f);
-    if (en.intensity < 0.0f || en.intensity > 1e6f) env.fail("'intensity' must be in [0, 1e6]");
+    if (en.intensity < 0.0f) env.fail("'intensity' must be >= 0");
   }
   env.finish();
   if (e->FirstChildElement()) env.fail("takes no child elements");

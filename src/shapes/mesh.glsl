@@ -6,7 +6,17 @@
 vec3 mesh_barycentrics(PrimRec t, vec3 p) {
   vec3 e1 = t.v1 - t.v0, e2 = t.v2 - t.v0, q = p - t.v0;
   vec3 n = cross(e1, e2);
-  float inv = 1.0 / dot(n, n);
+  float nn = dot(n, n);
+  if (!(nn >= 1e-30)) {
+    // A tiny triangle (edges below about 1e-8): |n|^2 leaves float's normal range and
+    // 1 / |n|^2 is inf (NaN barycentrics). Against n / max|n| the sums stay in range.
+    float s = max_abs(n);
+    if (!(s > 0.0)) return vec3(1.0 / 3.0);
+    vec3 m = n / s;
+    nn = dot(n, m);
+    n = m;
+  }
+  float inv = 1.0 / nn;
   float b1 = dot(cross(q, e2), n) * inv;
   float b2 = dot(cross(e1, q), n) * inv;
   return vec3(1.0 - b1 - b2, b1, b2);

@@ -115,6 +115,22 @@ vec3 barycentric_triangle(ShapeRec s, vec3 p) {
   vec3 e1 = k.v1 - k.v0, e2 = k.v2 - k.v0, q = p - k.v0;
   float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2), d20 = dot(q, e1), d21 = dot(q, e2);
   float den = d00 * d11 - d01 * d01;
+  if (!(abs(den) >= 1e-30)) {
+    // A tiny triangle: the Gram determinant (size^4) leaves float's normal range below
+    // edges of about 1e-8 (x / 0: NaN uv). In units of its longest edge it does not.
+    float l = max(max_abs(e1), max_abs(e2));
+    if (!(l > 0.0)) return vec3(1.0 / 3.0);
+    e1 /= l;
+    e2 /= l;
+    q /= l;
+    d00 = dot(e1, e1);
+    d01 = dot(e1, e2);
+    d11 = dot(e2, e2);
+    d20 = dot(q, e1);
+    d21 = dot(q, e2);
+    den = d00 * d11 - d01 * d01;
+    if (den == 0.0) return vec3(1.0 / 3.0);  // collinear in float
+  }
   float v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
   return vec3(1.0 - v - w, v, w);
 }
