@@ -59,7 +59,11 @@ const ptFiles = (() => {
       files.set(path, bytes);
       if (/\.gltf$/i.test(path)) await Promise.all(gltfReferences(bytes).map((r) => fetchOne(join(dirname(path), r))));
     };
-    await Promise.all(references(new TextDecoder().decode(xml)).map((r) => fetchOne(join(dirname(scenePath), r))));
+    // A .gltf or .glb is a scene of its own (scene/gltf_scene.h): a .gltf's references are
+    // its buffers and images, a .glb's are inside it.
+    const refs = /\.glb$/i.test(scenePath) ? [] : /\.gltf$/i.test(scenePath) ? gltfReferences(xml)
+      : references(new TextDecoder().decode(xml));
+    await Promise.all(refs.map((r) => fetchOne(join(dirname(scenePath), r))));
     return files;
   }
 
@@ -143,13 +147,15 @@ const ptFiles = (() => {
     return out;
   }
 
-  // The scene of a drop: its .xml file nearest the top (then by name), loaded with every
-  // file it references found among the others.
+  // The scene of a drop: its .xml file nearest the top (then by name), else its .gltf or
+  // .glb nearest the top (a scene of its own), loaded with every file it references found
+  // among the others.
   async function openLocal(entries) {
     const depth = (p) => p.split("/").length;
-    const xml = entries.filter((e) => /\.xml$/i.test(e.path))
+    const first = (re) => entries.filter((e) => re.test(e.path))
       .sort((a, b) => depth(a.path) - depth(b.path) || (a.path < b.path ? -1 : a.path > b.path ? 1 : 0))[0];
-    if (!xml) return notice("Drop a scene (.xml) together with the files it uses, or its folder.");
+    const xml = first(/\.xml$/i) || first(/\.(gltf|glb)$/i);
+    if (!xml) return notice("Drop a scene (.xml) or a glTF model (.gltf, .glb) together with the files it uses, or its folder.");
     const scenePath = normalize(xml.path);
     const root = `/drop/${++state.drops}`;
     write(await collect(local(entries), scenePath), root);

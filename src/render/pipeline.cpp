@@ -15,7 +15,7 @@ double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std
 }  // namespace
 
 ScenePipeline::ScenePipeline(const std::string& path, Renderer* renderer, ModeFor mode)
-    : path_(path), renderer_(renderer), mode_(std::move(mode)), read_(std::make_unique<SceneLoad>(read_scene_file(path), path)) {}
+    : path_(path), renderer_(renderer), mode_(std::move(mode)), read_(SceneLoad::open(path)) {}
 
 ScenePipeline::ScenePipeline(Scene scene, Renderer* renderer, ModeFor mode)
     : path_(scene.path), renderer_(renderer), mode_(std::move(mode)), scene_(std::make_unique<Scene>(std::move(scene))) {

@@ -36,7 +36,8 @@ class ScenePipeline {
   using OnRead = std::function<void(Scene& scene, const Times& times)>;
 
   // A scene file: its text is read and its XML checked here (throws InputError naming the
-  // file and line); its meshes are read by the steps. Without a renderer (attach() gives
+  // file and line); its meshes are read by the steps. A .gltf or .glb is a scene of its
+  // own (SceneLoad::open). Without a renderer (attach() gives
   // one later) it reads and packs only.
   explicit ScenePipeline(const std::string& path, Renderer* renderer = nullptr, ModeFor mode = {});
   // A scene in memory (an edit of the shown one, the one a lost context dropped): its

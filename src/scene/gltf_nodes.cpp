@@ -145,7 +145,9 @@ Resumable primitive(const tinygltf::Model& model, const Reader& r, MeshCache& ca
 
 }  // namespace
 
-Resumable scene_parts(const tinygltf::Model& model, const Reader& r, Materials& materials, std::vector<GltfPart>& parts) {
+Resumable scene_parts(const tinygltf::Model& model, const Reader& r, Materials& materials, std::vector<GltfPart>& parts,
+                      GltfCamera* camera) {
+  if (camera) *camera = GltfCamera{};
   MeshCache cache;
   // Depth-first over the node tree. glTF requires a tree (no node has two parents), so a
   // node reached twice is an error: that stops cycles and exponential fan-outs alike.
@@ -189,6 +191,19 @@ Resumable scene_parts(const tinygltf::Model& model, const Reader& r, Materials& 
         if (mat.uses_texcoord(1) && d->uvs1.empty()) r.fail(pat, "its material has image maps on TEXCOORD_1, but it has no TEXCOORD_1");
         if (!d->triangles.empty()) parts.push_back({d, world, mat});
       }
+    }
+    if (n.camera >= 0 && camera && (camera->node < 0 || it.node < camera->node)) {
+      if (size_t(n.camera) >= model.cameras.size()) r.fail(at, "no camera " + std::to_string(n.camera));
+      const tinygltf::Camera& c = model.cameras[size_t(n.camera)];
+      const std::string cat = pointer("cameras", size_t(n.camera));
+      GltfCamera g{.node = it.node, .transform = world, .perspective = c.type == "perspective", .yfov = 0.0f};
+      if (g.perspective) {
+        g.yfov = float(c.perspective.yfov);
+        if (!(g.yfov > 0.0f && g.yfov < 3.1415f)) r.fail(cat + "/perspective/yfov", "must be in (0, pi) radians");
+      } else if (c.type != "orthographic") {
+        r.fail(cat + "/type", "must be \"perspective\" or \"orthographic\"");
+      }
+      *camera = g;
     }
     for (int c : n.children) todo.push_back({c, world, at + "/children"});
   }

@@ -11,8 +11,11 @@
 
 namespace pt::gltf {
 
-// Appends the parts to `parts` (none when the scene has no triangles). Resumable (a unit:
-// an element of an accessor); every argument must outlive it.
-Resumable scene_parts(const tinygltf::Model& model, const Reader& r, Materials& materials, std::vector<GltfPart>& parts);
+// Appends the parts to `parts` (none when the scene has no triangles) and, if `camera` is
+// given, sets it to the camera node of lowest index in the tree (its node stays -1 when
+// there is none). Resumable (a unit: an element of an accessor); every argument must
+// outlive it.
+Resumable scene_parts(const tinygltf::Model& model, const Reader& r, Materials& materials, std::vector<GltfPart>& parts,
+                      GltfCamera* camera = nullptr);
 
 }  // namespace pt::gltf

@@ -30,7 +30,7 @@ bool supported(const std::string& e) {
 }  // namespace
 
 Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver resolve, std::vector<GltfPart>& parts,
-                           std::vector<std::string>* warnings) {
+                           std::vector<std::string>* warnings, GltfCamera* camera) {
   parts.clear();
   const GltfJson json = gltf_json(bytes, path);
   gltf::Context ctx;
@@ -53,16 +53,16 @@ Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver res
     warnings->push_back(path + ": extensions not supported (their materials fall back to the core glTF material): " + unsupported);
   const gltf::Reader r(path, model, std::move(buffers));
   gltf::Materials materials(r, model, ctx);
-  Resumable walk = gltf::scene_parts(model, r, materials, parts);
+  Resumable walk = gltf::scene_parts(model, r, materials, parts, camera);
   while (!co_await walk) {
   }
   if (parts.empty()) throw InputError(path, 0, "no triangles in the default scene");
 }
 
 std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve,
-                                 std::vector<std::string>* warnings) {
+                                 std::vector<std::string>* warnings, GltfCamera* camera) {
   std::vector<GltfPart> parts;
-  parse_gltf_steps(bytes, path, resolve, parts, warnings).finish();
+  parse_gltf_steps(bytes, path, resolve, parts, warnings, camera).finish();
   return parts;
 }
 

@@ -56,6 +56,16 @@ struct GltfMaterial {
   }
 };
 
+// A camera node of the default scene (the one of lowest node index: scene/gltf_scene.h
+// makes it the scene's camera). Perspective cameras give yfov; an orthographic one is
+// reported as such (a path tracer's camera here is a pinhole or thin lens).
+struct GltfCamera {
+  int node = -1;              // -1: the default scene has no camera node
+  glm::mat4 transform{1.0f};  // the node's world transform (the camera looks down its -z, up +y)
+  bool perspective = true;
+  float yfov = 0.0f;          // radians, in (0, pi)
+};
+
 struct GltfPart {
   std::shared_ptr<const MeshData> mesh;
   glm::mat4 transform{1.0f};  // object to the file's world space
@@ -75,12 +85,13 @@ using GltfResolver = std::function<std::string(const std::string& path)>;
 // not supported (their materials fall back to the core material); an unsupported one in
 // extensionsRequired is an error naming it.
 std::vector<GltfPart> parse_gltf(const std::string& bytes, const std::string& path, const GltfResolver& resolve,
-                                 std::vector<std::string>* warnings = nullptr);
+                                 std::vector<std::string>* warnings = nullptr, GltfCamera* camera = nullptr);
 // The same, resumable (core/resumable.h; a unit is an element of an accessor, or 1/4096
 // of 256 KB of a buffer file). Buffer files are read in slices and a GLB's BIN chunk is
 // read where it lies (tinygltf is given neither); what stays one step is tinygltf's parse
 // of the JSON and its decoding of base64 data: URIs. `parts` must outlive it.
+// `camera` (if given) receives the default scene's first camera node (GltfCamera).
 Resumable parse_gltf_steps(std::string bytes, std::string path, GltfResolver resolve, std::vector<GltfPart>& parts,
-                           std::vector<std::string>* warnings = nullptr);
+                           std::vector<std::string>* warnings = nullptr, GltfCamera* camera = nullptr);
 
 }  // namespace pt

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "scene/gltf_scene.h"
 #include "scene/xml_walk.h"
 
 namespace pt {
@@ -44,6 +45,7 @@ struct SceneLoad::State {
   double progress = 0.0;            // never goes back
   std::string stage;
   Scene scene;
+  bool gltf = false;  // a scene of a glTF file alone (scene/gltf_scene.h)
 };
 
 SceneLoad::SceneLoad(const std::string& text, const std::string& path, bool allow_files) : s_(std::make_unique<State>()) {
@@ -115,9 +117,37 @@ Resumable SceneLoad::steps() {
   // After meshes, the scene's build (one step: 10-40 ms in the page for a million
   // triangles) gets a slice of its own.
   if (!s.sources.empty()) co_await EndSlice{};
-  s.loader.root(s.doc.RootElement());
-  s.scene = std::move(s.loader.scene);
+  build();
 }
+
+void SceneLoad::build() {
+  State& s = *s_;
+  if (!s.gltf) {
+    s.loader.root(s.doc.RootElement());
+    s.scene = std::move(s.loader.scene);
+    return;
+  }
+  try {
+    s.loader.root(s.doc.RootElement());
+  } catch (const InputError& e) {
+    throw gltf_scene_error(e, s.loader.file);
+  }
+  s.scene = std::move(s.loader.scene);
+  set_gltf_camera(s.scene, s.loader.mesh_files.begin()->second.camera);  // its one mesh file
+  if (s.scene.environment.map_path.empty())
+    s.scene.warnings.push_back(s.loader.file + ": the default environment " + default_env_map() + " is missing: a constant sky instead");
+}
+
+std::unique_ptr<SceneLoad> SceneLoad::open(const std::string& path) {
+  if (!is_gltf_file(path)) return std::make_unique<SceneLoad>(read_scene_file(path), path);
+  std::string env = default_env_map();
+  if (!std::filesystem::exists(env)) env.clear();
+  auto l = std::make_unique<SceneLoad>(gltf_scene_text(path, env), path);
+  l->s_->gltf = true;
+  return l;
+}
+
+void SceneLoad::finish() { job_.finish(); }
 
 bool SceneLoad::run(long work) {
   State& s = *s_;
@@ -153,6 +183,10 @@ std::string read_scene_file(const std::string& path) {
   return std::move(*text);
 }
 
-Scene load_scene_file(const std::string& path) { return load_scene_text(read_scene_file(path), path); }
+Scene load_scene_file(const std::string& path) {
+  const std::unique_ptr<SceneLoad> l = SceneLoad::open(path);
+  l->finish();
+  return l->take();
+}
 
 }  // namespace pt

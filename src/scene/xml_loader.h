@@ -10,6 +10,7 @@ namespace pt {
 // Loads a scene in the seed's XML format. Throws InputError naming file and line for
 // anything malformed or not understood; never returns a partial scene.
 constexpr size_t kMaxSceneBytes = size_t(16) << 20;
+// A .gltf or .glb file is a scene of its own (scene/gltf_scene.h); any other file is XML.
 Scene load_scene_file(const std::string& path);
 // allow_files = false refuses every file reference (<Mesh src>, <Environment map>): for
 // text from an untrusted source, and for the fuzzer.
@@ -25,11 +26,15 @@ std::string read_scene_file(const std::string& path);
 class SceneLoad {
  public:
   SceneLoad(const std::string& text, const std::string& path, bool allow_files = true);
+  // The scene file `path` by its name: a .gltf or .glb is the scene of that file alone
+  // (scene/gltf_scene.h: its errors name the glTF file, not the generated scene), any
+  // other file is read (read_scene_file) as XML. The one place a scene file is opened.
+  static std::unique_ptr<SceneLoad> open(const std::string& path);
   ~SceneLoad();
   SceneLoad(const SceneLoad&) = delete;
   SceneLoad& operator=(const SceneLoad&) = delete;
   bool run(long work);  // true once the scene is built
-  void finish() { job_.finish(); }
+  void finish();
   bool done() const;
   double progress() const;         // 0..1, by the meshes read so far
   const std::string& stage() const;  // "reading model.glb", ...
@@ -37,6 +42,7 @@ class SceneLoad {
 
  private:
   Resumable steps();
+  void build();
   struct State;
   std::unique_ptr<State> s_;
   Resumable job_;

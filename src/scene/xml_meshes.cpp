@@ -46,7 +46,7 @@ Resumable load_mesh_steps(MeshSource m, MeshEntry& e) {
         Resumable g = parse_gltf_steps(std::move(*bytes), m.src, [&e](const std::string& f) {
           e.files.push_back(f);
           return f;
-        }, e.parts, &e.warnings);
+        }, e.parts, &e.warnings, &e.camera);
         while (!co_await g) {
         }
       } else if (has_extension(m.src, ".obj")) {

@@ -35,6 +35,7 @@ struct MeshEntry {
   std::vector<GltfPart> parts;
   std::vector<std::string> files;  // the files it read besides src (a glTF's buffers and images)
   std::vector<std::string> warnings;  // a glTF's unsupported extensions (parse_gltf)
+  GltfCamera camera;                  // a glTF's first camera node (for a scene of the file alone)
   std::optional<std::string> error;  // why it could not be loaded
 };
 
