@@ -193,7 +193,7 @@ void App::draw_error() {
     // Bounds in log10: the points', the target's, whole decades around them.
     double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
     for (const ErrorPoint& p : error_history_) {
-      const double x = std::log10(std::max(p.seconds, 1e-3)), y = std::log10(p.rel_mse);
+      const double x = std::log10(std::max(p.seconds, 1e-3)), y = std::log10(std::max(p.rel_mse, 1e-12));
       x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
     if (target_relmse_ > 0.0f) y0 = std::min(y0, std::log10(double(target_relmse_)));
@@ -204,6 +204,7 @@ void App::draw_error() {
     const auto at = [&](double x, double y) {
       return ImVec2(o.x + float((x - x0) / (x1 - x0)) * size.x, o.y + float((y1 - y) / (y1 - y0)) * size.y);
     };
+    dl->PushClipRect(o, ImVec2(o.x + size.x, o.y + size.y), true);  // the fit may leave the box
     dl->AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(0, 0, 0, 90));
     for (double x = x0 + 1; x < x1; ++x) dl->AddLine(at(x, y0), at(x, y1), IM_COL32(255, 255, 255, 40));
     for (double y = y0 + 1; y < y1; ++y) dl->AddLine(at(x0, y), at(x1, y), IM_COL32(255, 255, 255, 40));
@@ -212,7 +213,7 @@ void App::draw_error() {
       dl->AddLine(at(x0, y), at(x1, y), IM_COL32(120, 220, 120, 200));
     }
     std::vector<ImVec2> pts;
-    for (const ErrorPoint& p : error_history_) pts.push_back(at(std::log10(std::max(p.seconds, 1e-3)), std::log10(p.rel_mse)));
+    for (const ErrorPoint& p : error_history_) pts.push_back(at(std::log10(std::max(p.seconds, 1e-3)), std::log10(std::max(p.rel_mse, 1e-12))));
     dl->AddPolyline(pts.data(), int(pts.size()), IM_COL32(255, 200, 80, 255), 0, 1.5f);
     if (trend && target_stop_at_ == 0) {  // the fit, on to the plot's right edge
       const double xs = std::log10(std::max(error_history_.back().seconds, 1e-3));
@@ -223,6 +224,7 @@ void App::draw_error() {
     char axes[96];
     std::snprintf(axes, sizeof axes, "1e%d..1e%d s, 1e%d..1e%d", int(x0), int(x1), int(y0), int(y1));
     dl->AddText(ImVec2(o.x + 2, o.y + size.y - ImGui::GetFontSize()), IM_COL32(255, 255, 255, 120), axes);
+    dl->PopClipRect();
   }
   if (ImGui::InputFloat("target relMSE", &target_relmse_, 0.0f, 0.0f, "%.4g")) {
     target_relmse_ = std::isfinite(target_relmse_) ? std::max(0.0f, target_relmse_) : 0.0f;
