@@ -36,5 +36,6 @@ if [[ -z "${PT_SKIP_BROWSER:-}" ]]; then
   node tests/browser/page_test.mjs --web build/web --native build/native/pathtracer
   bash tools/site.sh >/dev/null
   node tests/browser/app_test.mjs --web build/web --site build/site
+  node tests/browser/error_test.mjs --web build/web
 fi
 echo "== all tests passed in $(( $(date +%s) - start )) s"

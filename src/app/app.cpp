@@ -41,6 +41,7 @@ App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make
     settings_.exposure = *options_.exposure;
     auto_exposure_ = false;
   }
+  if (options_.target_relmse > 0.0f && std::isfinite(options_.target_relmse)) target_relmse_ = options_.target_relmse;
   renderer_->set_settings(settings_);
 }
 
@@ -72,8 +73,9 @@ void App::frame(int fb_w, int fb_h, double now_ms) {
   renderer_->resize(size.x, size.y);
   draw_panel();
   draw_selection_panel(fb_w);
-  renderer_->set_settings(settings_);  // restarts only when the estimate changes
+  renderer_->set_settings(render_settings());  // restarts only when the estimate changes
   render_passes(now_ms, dt_ms);
+  update_error(now_ms);
   update_auto_exposure();
   present(fb_w, fb_h);
 }
@@ -83,7 +85,7 @@ void App::update_auto_exposure() {
   if (n < next_exposure_at_ / 2) next_exposure_at_ = 4;  // restarted since the last measure
   if (!auto_exposure_ || n < next_exposure_at_) return;
   settings_.exposure = float(auto_exposure(renderer_->read_radiance()));
-  renderer_->set_settings(settings_);
+  renderer_->set_settings(render_settings());
   next_exposure_at_ = std::min(n * 2, n + 512);
 }
 

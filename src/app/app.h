@@ -36,6 +36,7 @@ struct AppOptions {
   std::optional<int> bounces;
   std::optional<ToneMap> tonemap;
   std::optional<float> exposure;                        // fixed; unset = auto
+  float target_relmse = 0.0f;                            // stop once the estimate is at most this; 0 = none
   std::string gl_renderer;                               // shown in the panel and the stats
   // Hands a finished file to the platform (the page downloads it); unset: no save buttons.
   std::function<void(const std::string& name, const std::vector<uint8_t>& bytes, const char* mime)> save_file;
@@ -133,6 +134,30 @@ class App {
   double total_samples_ = 0;
   double samples_per_second_ = 0.0;
   double restart_ms_ = 0.0, done_ms_ = -1.0;
+
+  // The estimated error (issue 14; app_stats.cpp, the panel's part in app_panel.cpp): the
+  // renderer's estimate of the image's relMSE (three float images read back), taken at
+  // sweep ends at 2, 4, 8, ... samples and every kEstimateEveryMs, never more often than
+  // kEstimateMinMs nor than keeps its cost under 1/kEstimateShare of the time. A due
+  // estimate stops the frame's draws at the end of the sweep in progress (render_settings).
+  // With a target, rendering stops once an estimate is at most the target.
+  RenderSettings render_settings() const;  // settings_ with the target's stop and a due estimate's
+  void update_error(double now_ms);        // after the frame's draws
+  void draw_error();                       // the panel's readout, plot and target field
+  bool error_trend(double& a, double& b) const;  // log10 relMSE = a + b log10 seconds, fitted
+  std::string error_fields() const;              // the stats' JSON fields of the estimate
+  struct ErrorPoint {
+    double seconds;  // since the restart
+    double rel_mse;
+    int samples;
+  };
+  std::vector<ErrorPoint> error_history_;  // since the last restart
+  float target_relmse_ = 0.0f;             // 0: none
+  int target_stop_at_ = 0;                 // the samples at which an estimate reached the target; 0: not reached
+  bool estimate_due_ = false;
+  int next_estimate_at_ = 2, estimated_samples_ = 0;
+  double last_estimate_ms_ = -1e30, estimate_ms_ = 0.0, error_restart_ms_ = -1.0;
+  int estimates_ = 0;  // since the page opened (the stats)
 
   // Auto exposure (display only): the log-average luminance of the estimate is mapped to
   // middle grey, re-measured at 4, 8, 16, ... samples (up to every 512) after a restart.

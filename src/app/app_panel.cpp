@@ -3,6 +3,8 @@
 // before it draws.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include <GLFW/glfw3.h>  // key codes only: the ImGui GLFW backend indexes io.KeysDown by them
 #include <imgui.h>
@@ -165,6 +167,7 @@ void App::draw_panel() {
   ImGui::Text("samples/s  %.1f", samples_per_second_);
   ImGui::Text("elapsed    %.1f s", std::max(0.0, end_ms - restart_ms_) * 1e-3);
   ImGui::Text("resolution %d x %d", renderer_->width(), renderer_->height());
+  draw_error();
   draw_view_controls();
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextUnformatted(options_.gl_renderer.c_str());
@@ -172,6 +175,75 @@ void App::draw_panel() {
   ImGui::PopItemWidth();
   ImGui::PopTextWrapPos();
   ImGui::End();
+}
+
+// The estimated relMSE, its trend against time (log-log: each decade a grid line; the
+// fitted line dashed on to the target) and the target field.
+void App::draw_error() {
+  const int n = renderer_->samples();
+  if (error_history_.empty()) {
+    ImGui::TextUnformatted(n < 2 ? "est. relMSE (from 2 samples)" : "est. relMSE ...");
+  } else {
+    const ErrorPoint& last = error_history_.back();
+    ImGui::Text("est. relMSE %.4g at %d samples", last.rel_mse, last.samples);
+  }
+  double a = 0, b = 0;
+  const bool trend = error_trend(a, b);
+  if (error_history_.size() >= 2) {
+    // Bounds in log10: the points', the target's, whole decades around them.
+    double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+    for (const ErrorPoint& p : error_history_) {
+      const double x = std::log10(std::max(p.seconds, 1e-3)), y = std::log10(std::max(p.rel_mse, 1e-12));
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+    if (target_relmse_ > 0.0f) y0 = std::min(y0, std::log10(double(target_relmse_)));
+    x0 = std::floor(x0), x1 = std::max(std::ceil(x1), x0 + 1), y0 = std::floor(y0), y1 = std::max(std::ceil(y1), y0 + 1);
+    const ImVec2 size(ImGui::GetFontSize() * 14.0f, ImGui::GetFontSize() * 5.0f), o = ImGui::GetCursorScreenPos();
+    ImGui::Dummy(size);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const auto at = [&](double x, double y) {
+      return ImVec2(o.x + float((x - x0) / (x1 - x0)) * size.x, o.y + float((y1 - y) / (y1 - y0)) * size.y);
+    };
+    dl->PushClipRect(o, ImVec2(o.x + size.x, o.y + size.y), true);  // the fit may leave the box
+    dl->AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(0, 0, 0, 90));
+    for (double x = x0 + 1; x < x1; ++x) dl->AddLine(at(x, y0), at(x, y1), IM_COL32(255, 255, 255, 40));
+    for (double y = y0 + 1; y < y1; ++y) dl->AddLine(at(x0, y), at(x1, y), IM_COL32(255, 255, 255, 40));
+    if (target_relmse_ > 0.0f) {
+      const double y = std::log10(double(target_relmse_));
+      dl->AddLine(at(x0, y), at(x1, y), IM_COL32(120, 220, 120, 200));
+    }
+    std::vector<ImVec2> pts;
+    for (const ErrorPoint& p : error_history_) pts.push_back(at(std::log10(std::max(p.seconds, 1e-3)), std::log10(std::max(p.rel_mse, 1e-12))));
+    dl->AddPolyline(pts.data(), int(pts.size()), IM_COL32(255, 200, 80, 255), 0, 1.5f);
+    if (trend && target_stop_at_ == 0) {  // the fit, on to the plot's right edge
+      const double xs = std::log10(std::max(error_history_.back().seconds, 1e-3));
+      for (double x = xs; x < x1; x += (x1 - x0) / 40.0)
+        dl->AddLine(at(x, a + b * x), at(std::min(x1, x + (x1 - x0) / 80.0), a + b * std::min(x1, x + (x1 - x0) / 80.0)),
+                    IM_COL32(255, 200, 80, 140));
+    }
+    char axes[96];
+    std::snprintf(axes, sizeof axes, "1e%d..1e%d s, 1e%d..1e%d", int(x0), int(x1), int(y0), int(y1));
+    dl->AddText(ImVec2(o.x + 2, o.y + size.y - ImGui::GetFontSize()), IM_COL32(255, 255, 255, 120), axes);
+    dl->PopClipRect();
+  }
+  if (ImGui::InputFloat("target relMSE", &target_relmse_, 0.0f, 0.0f, "%.4g")) {
+    target_relmse_ = std::isfinite(target_relmse_) ? std::max(0.0f, target_relmse_) : 0.0f;
+    // A new target: the last estimate of this image decides at once, later ones after.
+    target_stop_at_ = 0;
+    const bool current = !error_history_.empty() && error_history_.back().samples == n;
+    if (target_relmse_ > 0.0f && current && error_history_.back().rel_mse <= double(target_relmse_)) target_stop_at_ = n;
+  }
+  if (target_relmse_ <= 0.0f) return;
+  if (target_stop_at_ > 0) {
+    ImGui::Text("target reached at %d samples", target_stop_at_);
+  } else if (trend && b < -0.05) {
+    // The fitted line reaches the target at 10^((log10 target - a) / b) seconds.
+    const double t = std::pow(10.0, (std::log10(double(target_relmse_)) - a) / b);
+    const double left = t - std::max(0.0, last_frame_ms_ - restart_ms_) * 1e-3;
+    ImGui::Text("to target  ~%.1f s (slope %.2f)", std::max(0.0, left), b);
+  } else {
+    ImGui::TextUnformatted("to target  (estimating the trend)");
+  }
 }
 
 }  // namespace pt

@@ -1,12 +1,24 @@
 // The App's test hooks and link: the stats and load status as JSON (web/index.html:
-// ptStats(), ptLoadStatus()) and the current view as URL parameters.
+// ptStats(), ptLoadStatus()) and the current view as URL parameters; the estimated error
+// (when it is read, the target's stop, the trend).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "app/app.h"
 
 namespace pt {
+namespace {
+
+// The estimate's cadence (App::update_error): at 2, 4, 8, ... samples and at least every
+// kEstimateEveryMs while samples grow, never twice within kEstimateMinMs, and never more
+// often than keeps its cost (read-backs and the sums on the CPU) under 1/kEstimateShare
+// of the time: in SwiftShader at 960x640 one estimate costs tens of ms (docs/benchmarks.md).
+constexpr double kEstimateEveryMs = 1000.0, kEstimateMinMs = 250.0, kEstimateShare = 20.0;
+constexpr size_t kTrendPoints = 8;  // the trend is fitted to the last this many estimates
+
+}  // namespace
 
 // Also used by app_interaction.cpp.
 std::string json_string(const std::string& s) {
@@ -48,7 +60,89 @@ std::string App::view_query() const {
     std::snprintf(e, sizeof e, "%.4g", double(settings_.exposure));
     q += std::string("&exposure=") + e;
   }
+  if (target_relmse_ > 0.0f) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%.4g", double(target_relmse_));
+    q += std::string("&target=") + t;
+  }
   return q;
+}
+
+RenderSettings App::render_settings() const {
+  RenderSettings s = settings_;
+  // A due estimate needs a whole sweep: the draws stop at the end of the one in progress
+  // (the limit is one sample past the count; a sweep adds at least one).
+  const int n = renderer_->samples();
+  const int stop = target_stop_at_ > 0 ? target_stop_at_ : estimate_due_ && renderer_->mid_sweep() ? n + 1 : 0;
+  if (stop > 0 && (s.sample_limit <= 0 || stop < s.sample_limit)) s.sample_limit = stop;
+  return s;
+}
+
+void App::update_error(double now_ms) {
+  const int n = renderer_->samples();
+  if (restart_ms_ != error_restart_ms_ || n < estimated_samples_) {  // a restart: a new image
+    error_restart_ms_ = restart_ms_;
+    error_history_.clear();
+    target_stop_at_ = 0;
+    estimate_due_ = false;
+    next_estimate_at_ = 2;
+    estimated_samples_ = 0;
+  }
+  const double since = now_ms - last_estimate_ms_;
+  if (!estimate_due_ && target_stop_at_ == 0 && n >= 2 && n > estimated_samples_ && since >= kEstimateMinMs &&
+      since >= kEstimateShare * estimate_ms_ && (n >= next_estimate_at_ || since >= kEstimateEveryMs))
+    estimate_due_ = true;
+  if (!estimate_due_ || renderer_->mid_sweep()) {
+    renderer_->set_settings(render_settings());
+    return;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const ErrorEstimate e = renderer_->estimate_error();
+  estimate_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  ++estimates_;
+  estimate_due_ = false;
+  last_estimate_ms_ = now_ms;
+  estimated_samples_ = n;
+  while (next_estimate_at_ <= n) next_estimate_at_ *= 2;
+  if (e.known && std::isfinite(e.rel_mse)) {
+    error_history_.push_back({std::max(0.0, now_ms - restart_ms_) * 1e-3, e.rel_mse, n});
+    if (target_relmse_ > 0.0f && e.rel_mse <= double(target_relmse_)) target_stop_at_ = n;
+  }
+  renderer_->set_settings(render_settings());  // lifts the sweep's stop, or keeps the target's
+}
+
+// Least squares over the last kTrendPoints estimates in log-log; false below 3 of them.
+bool App::error_trend(double& a, double& b) const {
+  const size_t first = error_history_.size() > kTrendPoints ? error_history_.size() - kTrendPoints : 0;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int k = 0;
+  for (size_t i = first; i < error_history_.size(); ++i) {
+    const ErrorPoint& p = error_history_[i];
+    if (p.seconds <= 0.0 || p.rel_mse <= 0.0) continue;
+    const double x = std::log10(p.seconds), y = std::log10(p.rel_mse);
+    sx += x, sy += y, sxx += x * x, sxy += x * y;
+    ++k;
+  }
+  const double d = k * sxx - sx * sx;
+  if (k < 3 || d <= 1e-12) return false;
+  b = (k * sxy - sx * sy) / d;
+  a = (sy - b * sx) / k;
+  return true;
+}
+
+// The estimate's fields of the stats (cheap: what update_error kept).
+std::string App::error_fields() const {
+  const bool known = !error_history_.empty();
+  std::string j = "\"relMSE\":" + (known ? json_number(error_history_.back().rel_mse) : std::string("null"));
+  j += ",\"relMSESamples\":" + std::to_string(known ? error_history_.back().samples : 0);
+  j += ",\"targetRelMSE\":" + json_number(target_relmse_);
+  j += ",\"targetReachedAt\":" + std::to_string(target_stop_at_);
+  j += ",\"estimates\":" + std::to_string(estimates_) + ",\"estimateMs\":" + json_number(estimate_ms_);
+  j += ",\"errorHistory\":[";
+  for (size_t i = 0; i < error_history_.size(); ++i)
+    j += std::string(i ? "," : "") + "[" + json_number(error_history_[i].seconds) + "," + json_number(error_history_[i].rel_mse) + "," +
+         std::to_string(error_history_[i].samples) + "]";
+  return j + "]";
 }
 
 std::string App::stats_json() const {
@@ -80,6 +174,7 @@ std::string App::stats_json() const {
   j += ",\"contextRestores\":" + std::to_string(context_restores_);
   j += ",\"renderScale\":" + json_number(render_scale_);
   j += ",\"files\":" + scene_files_json();
+  j += "," + error_fields();
   j += ",\"selected\":" + std::to_string(selected_);
   if (selected_ >= 0) {
     const Shape& sh = scene_.shapes[size_t(selected_)];
@@ -109,7 +204,7 @@ std::string App::load_fields() const {
 std::string App::load_status_json() const {
   return "{\"samples\":" + std::to_string(renderer_->samples()) + ",\"scene\":" + json_string(scene_.path) +
          ",\"error\":" + (error_ ? json_string(*error_) : std::string("null")) + ",\"loads\":" + std::to_string(loads_) + "," +
-         load_fields() + "}";
+         load_fields() + "," + error_fields() + "}";
 }
 
 }  // namespace pt

@@ -80,6 +80,7 @@ AppOptions page_options(int argc, char** argv) {
       o.camera_yaw_pitch = glm::vec2(v[3], v[4]);
     }
     if (key == "--bounces") o.bounces = std::atoi(value.c_str());
+    if (key == "--target") o.target_relmse = std::max(0.0f, std::strtof(value.c_str(), nullptr));
     ToneMap tm;
     if (key == "--tonemap" && tonemap_from_name(value.c_str(), &tm)) o.tonemap = tm;
     if (key == "--exposure" && value != "auto") {
