@@ -119,12 +119,13 @@ case "$part" in
     # The second wave's costs, builds side by side (build/bench/pt-NAME, carried): each
     # scene at 1080p for 5 s in both kernels (the per-pixel variance target, the glTF
     # BSDF against the old stand-in on the glTF scenes, the per-kind records).
+    # WAVE2_SCENES, WAVE2_SECONDS: a subset and a shorter time.
     for v in build/bench/pt-*; do
-      for s in scenes/cornell-box.xml scenes/reference/scene2.xml scenes/reference/scene0.xml scenes/gltf-instances.xml \
-               scenes/gltf/mr-grid.xml scenes/gltf/maps-quad.xml scenes/bench/million.xml; do
+      for s in ${WAVE2_SCENES:-scenes/cornell-box.xml scenes/reference/scene2.xml scenes/reference/scene0.xml scenes/gltf-instances.xml \
+               scenes/gltf/mr-grid.xml scenes/gltf/maps-quad.xml scenes/bench/million.xml}; do
         for k in compute fragment; do
           echo "== $(basename "$v") $(basename "$s" .xml) $k"
-          $v render "$s" --size $S --spp 100000 --seconds 5 --kernel $k --out /tmp/w.png | grep -E "shader|rendered|non-finite|estimated"
+          $v render "$s" --size $S --spp 100000 --seconds "${WAVE2_SECONDS:-5}" --kernel $k --out /tmp/w.png | grep -E "shader|rendered|non-finite|estimated"
         done
       done
     done
