@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <limits>
+#include <set>
 
 #include <cmath>
 #include <cstdio>
@@ -241,6 +242,7 @@ TEST_CASE("chi-square: light sampling of spheres, boxes, disks and triangles", "
     const char* name;
     const char* shape;
   };
+  std::set<std::string> covered;  // the SHAPE_ names of the cases
   for (const C& c : {C{"sphere light (near, wide cone)", "s.kind = SHAPE_SPHERE; s = with_sphere_rec(s, SphereRec(vec3(0.3, -0.2, 1.5), 1.2, vec3(0.0)));"},
                      C{"sphere light (far, narrow cone)", "s.kind = SHAPE_SPHERE; s = with_sphere_rec(s, SphereRec(vec3(4.0, 0.3, 0.2), 1.0, vec3(0.0)));"},
                      C{"box light (one face visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-1.0, -1.0, 0.5), vec3(1.0, 1.0, 2.0)));"},
@@ -252,6 +254,15 @@ TEST_CASE("chi-square: light sampling of spheres, boxes, disks and triangles", "
                               c.shape + "\n  return s;\n}\n" + density_helper;
     DirectionCase dc{setup, sample, "light_density(d)"};
     CHECK(direction_chi2(dc, c.name).p_value >= kAlpha);
+    covered.insert(std::string(c.shape).substr(std::string(c.shape).find("SHAPE_") + 6, std::string(c.shape).find(';') - std::string(c.shape).find("SHAPE_") - 6));
+  }
+  // Every light-sampled kind of the list has its case here (a new one cannot be forgotten).
+  for (const KindInfo& k : kShapeKinds) {
+    if (!k.samplable) continue;
+    std::string up = k.glsl;
+    for (char& ch : up) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+    INFO("no light-sampling chi-square case for " << k.xml);
+    CHECK(covered.count(up) == 1);
   }
 }
 

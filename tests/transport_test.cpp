@@ -15,6 +15,7 @@
 #include "glsl_harness.h"
 #include "render/camera.h"
 #include "scene/env_map.h"
+#include "scene/xml_loader.h"
 #include "scene_builders.h"
 #include "test_paths.h"
 
@@ -67,6 +68,27 @@ TEST_CASE("white furnace: energy-conserving materials return the environment", "
     const RenderResult r = render_scene(furnace(c.m), 64, 64, 64, st);
     check_close(c.name, region_mean(r, 24, 24, 40, 40), c.expect, &r);
   }
+}
+
+TEST_CASE("white furnace: every kind that loses no energy (its kFurnace) returns 1", "[gpu][transport]") {
+  test_gl();
+  RenderSettings st;
+  st.max_bounces = 64;
+  int tested = 0;
+  for (int k = 0; k < kNumMaterialKinds; ++k) {
+    const char* e = kMaterialTraits[k].furnace;
+    if (!e) continue;
+    Scene s = load_scene_text(std::string("<SceneLevel><Camera position=\"0 0 4\"/><Objects><Sphere center=\"0 0 0\" radius=\"1\">") + e +
+                                  "</Sphere></Objects></SceneLevel>",
+                              repo_path("scenes") + "/furnace.xml");
+    s.camera = camera_looking_down_z(glm::vec3(0.0f, 0.0f, 4.0f));  // the sphere covers the central 16x16 pixels of 64x64
+    s.environment.color = glm::vec3(1.0f);
+    REQUIRE(s.shapes.size() == 1);
+    const RenderResult r = render_scene(s, 64, 64, 64, st);
+    check_close((std::string("furnace: ") + e + " -> 1").c_str(), region_mean(r, 24, 24, 40, 40), 1.0, &r);
+    ++tested;
+  }
+  CHECK(tested >= 4);  // Diffuse, SmoothDielectric, Transmit, Reflect today
 }
 
 TEST_CASE("white furnace: a Fresnel composite of a mirror and a refraction returns 1", "[gpu][transport]") {

@@ -35,7 +35,8 @@ if [[ -z "${PT_SKIP_BROWSER:-}" ]]; then
   echo "== browser test (headless Chromium, WebGL 2 through SwiftShader)"
   node tests/browser/page_test.mjs --web build/web --native build/native/pathtracer
   bash tools/site.sh >/dev/null
-  node tests/browser/app_test.mjs --web build/web --site build/site
+  node tests/browser/app_test.mjs --web build/web
+  node tests/browser/load_test.mjs --web build/web --site build/site
   node tests/browser/error_test.mjs --web build/web
 fi
 echo "== all tests passed in $(( $(date +%s) - start )) s"

@@ -167,8 +167,8 @@ void App::draw_panel() {
   ImGui::Text("samples/s  %.1f", samples_per_second_);
   ImGui::Text("elapsed    %.1f s", std::max(0.0, end_ms - restart_ms_) * 1e-3);
   ImGui::Text("resolution %d x %d", renderer_->width(), renderer_->height());
-  draw_error();
   draw_view_controls();
+  draw_error();  // after the view's controls: their place stays where the browser tests click
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextUnformatted(options_.gl_renderer.c_str());
   ImGui::PopStyleColor();

@@ -10,6 +10,7 @@ struct Diffuse {
   static constexpr const char* kXml = "Diffuse";
   // An example (tests loop over every kind's; albedo <= 1; files relative to assets/textures).
   static constexpr const char* kExample = "<Attenuate color=\"0.9 0.8 0.7\"><Diffuse/></Attenuate>";
+  static constexpr const char* kFurnace = "<Diffuse/>";  // albedo 1
   PT_KIND_RECORD(PT_NO_FIELDS, PT_NO_FIELDS)
   void parse(MaterialParse&) {}
   void pack(MaterialWriter&) const {}

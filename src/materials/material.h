@@ -115,6 +115,14 @@ struct KindCutsHits : std::false_type {};
 template <class K>
 struct KindCutsHits<K, std::void_t<decltype(K::kCutsHits)>> : std::bool_constant<K::kCutsHits> {};
 template <class K, class = void>
+struct KindFurnace {
+  static constexpr const char* value = nullptr;
+};
+template <class K>
+struct KindFurnace<K, std::void_t<decltype(K::kFurnace)>> {
+  static constexpr const char* value = K::kFurnace;
+};
+template <class K, class = void>
 struct KindComposite : std::false_type {};
 template <class K>
 struct KindComposite<K, std::void_t<decltype(K::kComposite)>> : std::bool_constant<K::kComposite> {};

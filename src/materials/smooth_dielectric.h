@@ -10,6 +10,7 @@ struct SmoothDielectric {
   static constexpr const char* kXml = "SmoothDielectric";
   // An example (tests loop over every kind's; albedo <= 1; files relative to assets/textures).
   static constexpr const char* kExample = "<SmoothDielectric ior=\"1.5\"/>";
+  static constexpr const char* kFurnace = "<SmoothDielectric ior=\"2.4\"/>";  // much total internal reflection
   float ior = 1.5f;  // inside; outside is air (1)
   glm::vec3 color{1.0f};
 

@@ -10,6 +10,7 @@ struct Transmit {
   static constexpr const char* kXml = "Transmit";
   // An example (tests loop over every kind's; albedo <= 1; files relative to assets/textures).
   static constexpr const char* kExample = "<Transmit outerIor=\"1\" innerIor=\"1.5\"/>";
+  static constexpr const char* kFurnace = "<Transmit outerIor=\"1\" innerIor=\"1.33\"/>";
   float outerIor = 1.0f;  // the medium the outward normal points into
   float innerIor = 1.5f;
 

@@ -1,7 +1,7 @@
 // Browser test of the page as an application (Debian's Chromium, headless, SwiftShader):
 //
-//   node tests/browser/app_test.mjs [--web build/web] [--site build/site] [--out build/browser-test]
-//                                   [--only dev,responsiveness,large,site,view]
+//   node tests/browser/app_test.mjs [--web build/web] [--out build/browser-test] [--only dev,view]
+// (the loading, pacing and site checks: load_test.mjs; shared helpers: app_lib.mjs)
 //
 // Serves the web build with the dev server (tools/serve.mjs --dev) over a temporary scenes/
 // folder and checks: the served scene loads; clicking an object selects it (and the sky
@@ -13,94 +13,15 @@
 // on the page (synthetic drop with a DataTransfer) and one chosen with the file picker
 // load; the resolution-scale slider changes the render size; the camera moving renders
 // at reduced size and refines at full size; losing and restoring the WebGL context
-// (WEBGL_lose_context) resumes the same image; the device pixel ratio sizes the canvas;
-// loading a 1.3-million-triangle scene keeps the animation frames coming (its longest gap
-// is bounded) and shows its progress while the previous scene keeps rendering;
-// build/site (tools/site.sh) served from a sub-path renders; frames slower than 30/s
-// while rendering shrink the draws below a band of 4 rows. Prints the UI frame rate with
-// the sample limit reached and while rendering, the draw size the pacing settled on,
-// samples/s, and the GPU time per frame where EXT_disjoint_timer_query_webgl2 exists.
+// (WEBGL_lose_context) resumes the same image; the device pixel ratio sizes the canvas.
 // Screenshots go to the out folder. 'ok - NAME' / 'not ok - NAME: why', then a summary.
-import { spawn } from "node:child_process";
 import { existsSync, mkdirSync, mkdtempSync, renameSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
-import { dirname, join, resolve } from "node:path";
-import { fileURLToPath } from "node:url";
-import { chromium } from "playwright-core";
+import { join } from "node:path";
+import { camOf, check, checkWebBuild, launcher, liveScene, openPage, options, put, quad, run, shot as shotIn, startServer, stats, until } from "./app_lib.mjs";
 
-const repo = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
-const opt = { web: "build/web", site: "build/site", out: "build/browser-test", only: "" };
-for (let i = 2; i < process.argv.length; i += 2) {
-  const key = process.argv[i].replace(/^--/, "");
-  if (!(key in opt) || i + 1 >= process.argv.length) {
-    console.error("usage: node app_test.mjs [--web DIR] [--site DIR] [--out DIR] [--only GROUP,...]");
-    process.exit(2);
-  }
-  opt[key] = process.argv[i + 1];
-}
-// --only: a comma-separated subset of the groups below (dev, responsiveness, large, site, view).
-const groups = new Set(opt.only ? opt.only.split(",") : ["dev", "responsiveness", "large", "site", "view"]);
-const webDir = resolve(repo, opt.web), siteDir = resolve(repo, opt.site), outDir = resolve(repo, opt.out);
-// Loading scenes/bench/million.xml: the longest gap between animation frames (every step
-// of the load is sliced, the mesh's generation included; what remains is a slice, a drawn
-// frame and the machine's other jobs: docs/benchmarks.md; the blocking build gave 11.8 s),
-// and the whole load (9-37 s on the shared 2-core machine).
-const kLargeLoadGapMs = 2500;
-const kLargeLoadMs = 60000;
-const shot = (page, name) => page.screenshot({ path: join(outDir, `app-${name}.png`) });
-
-const results = [];
-function check(name, ok, why = "") {
-  results.push(ok);
-  console.log(ok ? `ok - ${name}` : `not ok - ${name}: ${why}`);
-}
-
-const chromeArgs = ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-gpu-vsync",
-                    "--disable-background-networking", "--disable-component-update", "--no-first-run", "--disable-sync"];
-
-function startServer(args) {
-  const child = spawn(process.execPath, [join(repo, "tools/serve.mjs"), ...args], { stdio: ["ignore", "pipe", "inherit"] });
-  return new Promise((ok, fail) => {
-    let text = "";
-    child.stdout.on("data", (d) => {
-      text += d;
-      const m = /Serving (http:\S+)/.exec(text);
-      if (m) ok({ child, url: m[1] });
-    });
-    child.on("exit", (code) => fail(new Error(`serve.mjs exited with ${code}`)));
-  });
-}
-
-// An editor's save: the new content appears at once (temporary file + rename).
-function put(path, text) {
-  writeFileSync(path + ".tmp", text);
-  renameSync(path + ".tmp", path);
-}
-
-// The live scene: a sphere in the middle (line 5), a blue quad mesh to its right.
-const liveScene = (sky, cam = "0 0 6") => `<SceneLevel>
-  <Camera position="${cam}" yaw="90" pitch="0"/>
-  <Environment color="${sky}"/>
-  <Objects>
-    <Sphere center="0 0 0" radius="1.5"><Attenuate color="0.8 0.8 0.8"><Diffuse/></Attenuate></Sphere>
-    <Mesh src="quad.obj" position="2.6 0 0"><Attenuate color="0.2 0.2 0.8"><Diffuse/></Attenuate></Mesh>
-  </Objects>
-</SceneLevel>
-`;
-const quad = (h) => `v -${h} -${h} 0\nv ${h} -${h} 0\nv ${h} ${h} 0\nv -${h} ${h} 0\nf 1 2 3 4\n`;
-
-async function openPage(context, url, errors) {
-  const page = await context.newPage();
-  page.on("console", (m) => { if (m.type() === "error") errors.push(`console: ${m.text()}`); });
-  page.on("pageerror", (e) => errors.push(`page error: ${e.message}`));
-  await page.goto(url);
-  await page.waitForFunction(() => { try { return window.ptStats() !== null; } catch { return false; } }, null,
-                             { timeout: 60000, polling: 200 });
-  return page;
-}
-const stats = (page) => page.evaluate(() => window.ptStats());
-const until = (page, fn, arg, timeout = 60000) => page.waitForFunction(fn, arg, { timeout, polling: 50 });
-const camOf = (s) => /cam=([^&]+)/.exec(s.view)[1];
+const { groups, webDir, outDir } = options("app_test.mjs", ["dev", "view"]);
+const shot = (page, name) => shotIn(page, name, outDir);
 
 async function devChecks(context, url, dir) {
   const errors = [];
@@ -312,161 +233,9 @@ async function viewChecks(context, url) {
   await page.close();
 }
 
-// UI frames per second over `ms` (animation frames), the longest frame and, with
-// EXT_disjoint_timer_query_webgl2, the GPU time of the frames (a query around everything
-// the page draws between two animation frames).
-function uiFrames(page, ms) {
-  return page.evaluate((ms) => new Promise((done) => {
-    const gl = document.getElementById("canvas").getContext("webgl2");
-    const ext = gl.getExtension("EXT_disjoint_timer_query_webgl2");
-    const queries = [], gpu = [];
-    let frames = 0, worst = 0, last = performance.now();
-    const t0 = last;
-    const tick = () => {
-      const now = performance.now();
-      worst = Math.max(worst, now - last);
-      last = now;
-      frames++;
-      if (ext) {  // end the previous frame's query, start this one's (rAF callbacks run before the page's)
-        if (queries.length && queries[queries.length - 1].open) { gl.endQuery(ext.TIME_ELAPSED_EXT); queries[queries.length - 1].open = false; }
-        const q = gl.createQuery();
-        gl.beginQuery(ext.TIME_ELAPSED_EXT, q);
-        queries.push({ q, open: true });
-        for (const x of queries) if (!x.done && !x.open && gl.getQueryParameter(x.q, gl.QUERY_RESULT_AVAILABLE)) {
-          x.done = true;
-          if (!gl.getParameter(ext.GPU_DISJOINT_EXT)) gpu.push(gl.getQueryParameter(x.q, gl.QUERY_RESULT) / 1e6);
-        }
-      }
-      if (now - t0 < ms) requestAnimationFrame(tick);
-      else {
-        if (ext && queries[queries.length - 1].open) gl.endQuery(ext.TIME_ELAPSED_EXT);
-        const gpuMs = gpu.length ? gpu.reduce((a, b) => a + b, 0) / gpu.length : NaN;
-        done({ fps: frames * 1000 / (now - t0), worst, gpuMs, queries: gpu.length, timer: !!ext });
-      }
-    };
-    requestAnimationFrame(tick);
-  }), ms);
-}
-const gpuText = (r) => r.timer ? `GPU time per frame ${r.gpuMs.toFixed(1)} ms (${r.queries} timer queries)` : "no timer query extension";
-
-// The page at the viewport's size with scene2: the UI frame rate once the sample limit is
-// reached (nothing but the panel and the image's display: the fixed cost of a frame; one
-// bounce, so that the first sample comes sooner), then while rendering without limit,
-// with the draw size the pacing settled on.
-async function responsiveness(context, url) {
-  const errors = [];
-  let page = await openPage(context, `${url}?scene=reference/scene2.xml&bounces=1&limit=1`, errors);
-  await until(page, () => window.ptLoadStatus().samples >= 1, null, 180000);
-  await page.waitForTimeout(1000);
-  const idle = await uiFrames(page, 3000);
-  await page.close();
-  page = await openPage(context, `${url}?scene=reference/scene2.xml&limit=0`, errors);
-  await page.waitForTimeout(5000);
-  const r = await uiFrames(page, 4000);
-  const s = await stats(page);
-  const draw = s.bandRows ? `${s.bandRows} row(s)` + (s.bandColumns ? ` x ${s.bandColumns} columns` : "") : `${s.height} rows`;
-  console.log(`# chromium scene2 ${s.width}x${s.height}, sample limit reached: ${idle.fps.toFixed(1)} UI frames/s ` +
-              `(worst frame ${idle.worst.toFixed(0)} ms), ${gpuText(idle)}`);
-  console.log(`# chromium scene2 ${s.width}x${s.height}, rendering: ${r.fps.toFixed(1)} UI frames/s (worst frame ${r.worst.toFixed(0)} ms), ` +
-              `${s.samplesPerSecond.toFixed(2)} spp/s, ${s.passesPerFrame} draw(s) per frame of ${draw}; ${gpuText(r)}`);
-  // Not a frame-rate bound (a loaded machine would fail it), but what the pacing must do
-  // about slow frames: under 30 UI frames/s, the draws are smaller than a band of 4 rows
-  // (the previous pacing stopped there, at 10-15 frames/s on this machine).
-  const drawPixels = (s.bandRows || s.height) * (s.bandColumns || s.width);
-  check("frames under 30/s while rendering shrink the draws below a band of 4 rows", r.fps >= 30 || drawPixels < 4 * s.width,
-        `${r.fps.toFixed(1)} UI frames/s with draws of ${draw}`);
-  await shot(page, "responsiveness");
-  if (errors.length) check("no console or page errors (responsiveness page)", false, errors.join(" | "));
-  await page.close();
-}
-
-// Loading a large scene (scenes/bench/million.xml: 1,310,720 triangles, its BVH built in
-// slices across frames) while another one renders: the animation frames keep coming (the
-// longest gap between two is bounded), the stage and progress are shown, the previous
-// scene keeps accumulating until the new one is ready, and the new one renders.
-async function largeLoad(context, url) {
-  const errors = [];
-  const page = await openPage(context, `${url}?scene=reference/scene2.xml&size=96x64&limit=0`, errors);
-  await until(page, () => window.ptLoadStatus().samples >= 2 && !window.ptLoadStatus().loading);
-  const result = page.evaluate(() => new Promise((done) => {
-    const seen = [];  // per frame while loading: stage, progress, the shown scene and its samples
-    let worst = 0, frames = 0, last = performance.now(), swapMs = -1, worstAfter = 0;
-    const t0 = last;
-    const before = window.ptLoadStatus();
-    window.ptLoadScene("/scenes/bench/million.xml");
-    const tick = () => {
-      const now = performance.now();
-      // Up to the swap (this frame included): the load; after it, the new scene's first
-      // draws, which a software GPU makes slow (reported, not bounded here).
-      if (swapMs < 0) worst = Math.max(worst, now - last);
-      else worstAfter = Math.max(worstAfter, now - last);
-      last = now;
-      frames++;
-      const s = window.ptLoadStatus();
-      if (s.loading) seen.push({ stage: s.loading.stage, progress: s.loading.progress, scene: s.scene, samples: s.samples });
-      if (swapMs < 0 && s.scene.endsWith("million.xml")) swapMs = now - t0;
-      if ((s.scene.endsWith("million.xml") && s.samples >= 1) || (s.error && !s.loading) || now - t0 > 120000)
-        done({ worst, worstAfter, frames, ms: now - t0, swapMs, seen, before, after: s });
-      else requestAnimationFrame(tick);
-    };
-    requestAnimationFrame(tick);
-  }));
-  // The panel while the BVH is being built (the screenshot itself costs the page a frame).
-  await until(page, () => { const l = window.ptLoadStatus().loading; return l && l.progress > 0.4; }, null, 120000).catch(() => {});
-  await shot(page, "large-loading");
-  const r = await result;
-  const s = await stats(page);
-  await shot(page, "large-loaded");
-  const building = r.seen.filter((x) => x.stage === "building the BVH");
-  const generating = r.seen.filter((x) => x.stage === "generating the mesh");
-  const increasing = r.seen.every((x, i) => i === 0 || x.progress >= r.seen[i - 1].progress);
-  const oldSamples = r.seen.filter((x) => x.scene === r.before.scene).reduce((m, x) => Math.max(m, x.samples), -1);
-  console.log(`# million.xml shown ${r.swapMs.toFixed(0)} ms after the request (the longest gap between animation frames ${r.worst.toFixed(0)} ms), ` +
-              `its first samples after ${r.ms.toFixed(0)} ms (${r.frames} animation frames; the longest gap after the swap ${r.worstAfter.toFixed(0)} ms); ` +
-              `mesh generated in ${s.lastLoad.readSlices} slices (${s.lastLoad.readWorkMs.toFixed(0)} ms of work, ${generating.length} frames); ` +
-              `packed in ${s.lastLoad.slices} slices, ${s.lastLoad.packWorkMs.toFixed(0)} ms of work, the longest slice ` +
-              `${s.lastLoad.longestSliceMs.toFixed(0)} ms (${s.lastLoad.longestSliceStage}); BVH ${s.lastLoad.bvhBuildMs.toFixed(0)} ms of work; ready ${s.lastLoad.ms.toFixed(0)} ms ` +
-              `after the request; scene2 went from ${r.before.samples} to ${oldSamples} samples meanwhile`);
-  check("loading 1.3 M triangles keeps the animation frames coming", r.worst < kLargeLoadGapMs,
-        `longest gap between animation frames ${r.worst.toFixed(0)} ms (bound ${kLargeLoadGapMs})`);
-  check("the loading stage and progress are shown", building.length >= 5 && building.some((x) => x.progress > 0.2 && x.progress < 0.8) &&
-        generating.length >= 3 && s.lastLoad.readSlices >= 10 && increasing,
-        `${r.seen.length} frames while loading, ${generating.length} of them generating the mesh (${s.lastLoad.readSlices} slices), ` +
-        `${building.length} building the BVH; increasing ${increasing}`);
-  check("the previous scene keeps rendering while the new one loads", oldSamples > r.before.samples,
-        `scene2 samples ${r.before.samples} -> ${oldSamples}`);
-  check("the large scene renders once loaded", s.scene === "/scenes/bench/million.xml" && !s.error && s.samples >= 1 &&
-        s.mean[0] > 0 && s.lastLoad.primitives === 1310721 && r.ms < kLargeLoadMs,
-        JSON.stringify({ scene: s.scene, error: s.error, samples: s.samples, mean: s.mean, lastLoad: s.lastLoad, ms: r.ms }));
-  if (errors.length) check("no console or page errors (large load page)", false, errors.join(" | "));
-  await page.close();
-}
-
-async function siteChecks(context) {
-  if (!existsSync(join(siteDir, "index.html"))) return check("the site renders from a sub-path", false, `${siteDir} missing: run 'bash tools/site.sh'`);
-  const server = await startServer([siteDir, "0", "--base", "/pathtracer/"]);
-  const errors = [], outside = [];
-  try {
-    const page = await context.newPage();
-    page.on("request", (r) => { if (!new URL(r.url()).pathname.startsWith("/pathtracer/")) outside.push(r.url()); });
-    page.on("console", (m) => { if (m.type() === "error") errors.push(`console: ${m.text()}`); });
-    page.on("pageerror", (e) => errors.push(`page error: ${e.message}`));
-    await page.goto(`${server.url}?scene=reference/scene0.xml&size=64x48&limit=2`);
-    await until(page, () => { try { return window.ptStats().samples >= 2; } catch { return false; } }, null, 60000).catch(() => {});
-    const s = await page.evaluate(() => { try { return window.ptStats(); } catch { return null; } });
-    await shot(page, "site-subpath");
-    check("the site renders from a sub-path with relative URLs only", s && s.samples >= 2 && s.mean[0] > 0 && !s.error &&
-          outside.length === 0 && errors.length === 0, JSON.stringify({ samples: s?.samples, error: s?.error, outside, errors }));
-    await page.close();
-  } finally {
-    server.child.kill();
-  }
-}
-
 async function main() {
   mkdirSync(outDir, { recursive: true });
-  for (const f of ["index.html", "files.js", "pathtracer.js", "pathtracer.wasm", "pathtracer.data"])
-    if (!existsSync(join(webDir, f))) throw new Error(`${join(webDir, f)} is missing: build with 'cmake --preset web && cmake --build --preset web'`);
+  checkWebBuild(webDir);
   const tmp = mkdtempSync(join(tmpdir(), "pt-app-test-"));
   const scenes = join(tmp, "scenes"), assets = join(tmp, "assets");
   mkdirSync(scenes);
@@ -475,23 +244,15 @@ async function main() {
   writeFileSync(join(scenes, "quad.obj"), quad(1));
   const server = await startServer([webDir, "0", "--dev", "--scenes", scenes, "--assets", assets]);
   const userDir = mkdtempSync(join(tmpdir(), "pt-chromium-"));
-  const launch = (extra) => chromium.launchPersistentContext(userDir, { executablePath: "/usr/bin/chromium", headless: true, args: chromeArgs, ...extra });
+  const launch = launcher(userDir);
   try {
-    let context = await launch({ viewport: { width: 960, height: 640 } });
-    if (groups.has("dev")) await devChecks(context, server.url, scenes);
-    if (groups.has("responsiveness") || groups.has("large")) {
-      const plain = await startServer([webDir, "0"]);  // scene2 is not in the dev server's temporary folder
-      try {
-        if (groups.has("responsiveness")) await responsiveness(context, plain.url);
-        if (groups.has("large")) await largeLoad(context, plain.url);
-      } finally {
-        plain.child.kill();
-      }
+    if (groups.has("dev")) {
+      const context = await launch({ viewport: { width: 960, height: 640 } });
+      await devChecks(context, server.url, scenes);
+      await context.close();
     }
-    if (groups.has("site")) await siteChecks(context);
-    await context.close();
     if (groups.has("view")) {
-      context = await launch({ viewport: { width: 640, height: 400 }, deviceScaleFactor: 2 });
+      const context = await launch({ viewport: { width: 640, height: 400 }, deviceScaleFactor: 2 });
       await viewChecks(context, server.url);
       await context.close();
     }
@@ -502,11 +263,4 @@ async function main() {
   }
 }
 
-try {
-  await main();
-} catch (e) {
-  check("test ran to the end", false, e.stack ?? String(e));
-}
-const passed = results.filter(Boolean).length;
-console.log(`${passed} passed, ${results.length - passed} failed`);
-process.exit(results.length > 0 && passed === results.length ? 0 : 1);
+await run(main);

@@ -1,0 +1,97 @@
+// Shared by the page's application tests (app_test.mjs, load_test.mjs): options, the
+// result list, the dev server, Chromium's flags, and helpers to open and poll the page.
+import { spawn } from "node:child_process";
+import { existsSync, renameSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { dirname, join, resolve } from "node:path";
+import { fileURLToPath } from "node:url";
+import { chromium } from "playwright-core";
+
+export const repo = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
+// Options of every application test: --web, --site, --out, --only (a comma-separated
+// subset of the test's groups).
+export function options(script, allGroups) {
+  const opt = { web: "build/web", site: "build/site", out: "build/browser-test", only: "" };
+  for (let i = 2; i < process.argv.length; i += 2) {
+    const key = process.argv[i].replace(/^--/, "");
+    if (!(key in opt) || i + 1 >= process.argv.length) {
+      console.error(`usage: node ${script} [--web DIR] [--site DIR] [--out DIR] [--only ${allGroups.join(",")}]`);
+      process.exit(2);
+    }
+    opt[key] = process.argv[i + 1];
+  }
+  return { groups: new Set(opt.only ? opt.only.split(",") : allGroups), webDir: resolve(repo, opt.web),
+           siteDir: resolve(repo, opt.site), outDir: resolve(repo, opt.out) };
+}
+export const shot = (page, name, outDir) => page.screenshot({ path: join(outDir, `app-${name}.png`) });
+
+const results = [];
+export function check(name, ok, why = "") {
+  results.push(ok);
+  console.log(ok ? `ok - ${name}` : `not ok - ${name}: ${why}`);
+}
+// Runs main, prints the summary and exits 0 only when every check passed.
+export async function run(main) {
+  try {
+    await main();
+  } catch (e) {
+    check("test ran to the end", false, e.stack ?? String(e));
+  }
+  const passed = results.filter(Boolean).length;
+  console.log(`${passed} passed, ${results.length - passed} failed`);
+  process.exit(results.length > 0 && passed === results.length ? 0 : 1);
+}
+
+export const chromeArgs = ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-gpu-vsync",
+                    "--disable-background-networking", "--disable-component-update", "--no-first-run", "--disable-sync"];
+
+export function startServer(args) {
+  const child = spawn(process.execPath, [join(repo, "tools/serve.mjs"), ...args], { stdio: ["ignore", "pipe", "inherit"] });
+  return new Promise((ok, fail) => {
+    let text = "";
+    child.stdout.on("data", (d) => {
+      text += d;
+      const m = /Serving (http:\S+)/.exec(text);
+      if (m) ok({ child, url: m[1] });
+    });
+    child.on("exit", (code) => fail(new Error(`serve.mjs exited with ${code}`)));
+  });
+}
+
+// An editor's save: the new content appears at once (temporary file + rename).
+export function put(path, text) {
+  writeFileSync(path + ".tmp", text);
+  renameSync(path + ".tmp", path);
+}
+
+// The live scene: a sphere in the middle (line 5), a blue quad mesh to its right.
+export const liveScene = (sky, cam = "0 0 6") => `<SceneLevel>
+  <Camera position="${cam}" yaw="90" pitch="0"/>
+  <Environment color="${sky}"/>
+  <Objects>
+    <Sphere center="0 0 0" radius="1.5"><Attenuate color="0.8 0.8 0.8"><Diffuse/></Attenuate></Sphere>
+    <Mesh src="quad.obj" position="2.6 0 0"><Attenuate color="0.2 0.2 0.8"><Diffuse/></Attenuate></Mesh>
+  </Objects>
+</SceneLevel>
+`;
+export const quad = (h) => `v -${h} -${h} 0\nv ${h} -${h} 0\nv ${h} ${h} 0\nv -${h} ${h} 0\nf 1 2 3 4\n`;
+
+export async function openPage(context, url, errors) {
+  const page = await context.newPage();
+  page.on("console", (m) => { if (m.type() === "error") errors.push(`console: ${m.text()}`); });
+  page.on("pageerror", (e) => errors.push(`page error: ${e.message}`));
+  await page.goto(url);
+  await page.waitForFunction(() => { try { return window.ptStats() !== null; } catch { return false; } }, null,
+                             { timeout: 60000, polling: 200 });
+  return page;
+}
+export const stats = (page) => page.evaluate(() => window.ptStats());
+export const until = (page, fn, arg, timeout = 60000) => page.waitForFunction(fn, arg, { timeout, polling: 50 });
+export const camOf = (s) => /cam=([^&]+)/.exec(s.view)[1];
+
+export function checkWebBuild(webDir) {
+  for (const f of ["index.html", "files.js", "pathtracer.js", "pathtracer.wasm", "pathtracer.data"])
+    if (!existsSync(join(webDir, f))) throw new Error(`${join(webDir, f)} is missing: build with 'cmake --preset web && cmake --build --preset web'`);
+}
+export const launcher = (userDir) => (extra) =>
+  chromium.launchPersistentContext(userDir, { executablePath: "/usr/bin/chromium", headless: true, args: chromeArgs, ...extra });
