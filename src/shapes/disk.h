@@ -49,14 +49,8 @@ struct Disk {
   void intersect(const Q& q, int id, Hit& h) const { intersect_disk(*this, id, q.r, h); }
   glm::vec3 position() const { return center; }
   void move(glm::vec3 d) { center += d; }
-  // The radius, through a copy: a typed-in value <= 0 is ignored.
   template <class E>
-  bool edit(E& e) {
-    float r = radius;
-    if (!e.drag("radius", r, 0.2f, 1e-4f, 1e6f) || !(r > 0.0f)) return false;
-    radius = r;
-    return true;
-  }
+  bool edit(E& e) { return edit_radius(e, radius); }
 };
 
 // CPU twin of disk.glsl's intersect_disk.

@@ -40,6 +40,15 @@ class ShapeWriter : public KindWriter {
 
 constexpr unsigned shape_bit(ShapeKind k) { return 1u << int(k); }
 
+// A radius as a panel field, through a copy: a typed-in value <= 0 is ignored.
+template <class E>
+bool edit_radius(E& e, float& radius) {
+  float r = radius;
+  if (!e.drag("radius", r, 0.2f, 1e-4f, 1e6f) || !(r > 0.0f)) return false;
+  radius = r;
+  return true;
+}
+
 struct ShapeBounds {
   glm::vec3 lo{3.0e38f}, hi{-3.0e38f};  // empty: lo > hi
   void grow(glm::vec3 p) {

@@ -10,48 +10,14 @@
 // below X, and the address keeps &target=; no console errors. Prints the cost of one
 // estimate (read-backs and sums) at 128x128 and at 960x640 (the canvas, the closed room). Screenshots go
 // to the out folder. 'ok - NAME' / 'not ok - NAME: why', then a summary.
-import { spawn } from "node:child_process";
 import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
-import { dirname, join, resolve } from "node:path";
-import { fileURLToPath } from "node:url";
-import { chromium } from "playwright-core";
+import { join } from "node:path";
+import { check, launcher, options, run, startServer } from "./app_lib.mjs";
 
-const repo = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
-const opt = { web: "build/web", out: "build/browser-test" };
-for (let i = 2; i < process.argv.length; i += 2) {
-  const key = process.argv[i].replace(/^--/, "");
-  if (!(key in opt) || i + 1 >= process.argv.length) {
-    console.error("usage: node error_test.mjs [--web DIR] [--out DIR]");
-    process.exit(2);
-  }
-  opt[key] = process.argv[i + 1];
-}
-const webDir = resolve(repo, opt.web), outDir = resolve(repo, opt.out);
+const { webDir, outDir } = options("error_test.mjs", []);
 mkdirSync(outDir, { recursive: true });
 const shot = (page, name) => page.screenshot({ path: join(outDir, `error-${name}.png`) });
-
-const results = [];
-function check(name, ok, why = "") {
-  results.push(ok);
-  console.log(ok ? `ok - ${name}` : `not ok - ${name}: ${why}`);
-}
-
-const chromeArgs = ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-gpu-vsync",
-                    "--disable-background-networking", "--disable-component-update", "--no-first-run", "--disable-sync"];
-
-function startServer(args) {
-  const child = spawn(process.execPath, [join(repo, "tools/serve.mjs"), ...args], { stdio: ["ignore", "pipe", "inherit"] });
-  return new Promise((ok, fail) => {
-    let text = "";
-    child.stdout.on("data", (d) => {
-      text += d;
-      const m = /Serving (http:\S+)/.exec(text);
-      if (m) ok({ child, url: m[1] });
-    });
-    child.on("exit", (code) => fail(new Error(`serve.mjs exited with ${code}`)));
-  });
-}
 
 async function openPage(context, url, errors) {
   const page = await context.newPage();
@@ -147,8 +113,7 @@ async function main() {
   const server = await startServer([webDir, "0"]);
   const userDir = mkdtempSync(join(tmpdir(), "pt-chromium-"));
   try {
-    const context = await chromium.launchPersistentContext(userDir, { executablePath: "/usr/bin/chromium", headless: true,
-                                                                      args: chromeArgs, viewport: { width: 960, height: 640 } });
+    const context = await launcher(userDir)({ viewport: { width: 960, height: 640 } });
     const reached = await readout(context, server.url);
     await target(context, server.url, reached * 1.5);
     await cost(context, server.url);
@@ -159,11 +124,4 @@ async function main() {
   }
 }
 
-try {
-  await main();
-} catch (e) {
-  check("test ran to the end", false, e.stack ?? String(e));
-}
-const passed = results.filter(Boolean).length;
-console.log(`${passed} passed, ${results.length - passed} failed`);
-process.exit(results.length > 0 && passed === results.length ? 0 : 1);
+await run(main);
