@@ -67,4 +67,15 @@ void Framebuffer::reset() {
   id_ = 0;
 }
 
+std::vector<float> read_rgba_float(GLuint fbo, int attachment, int w, int h) {
+  std::vector<float> out(size_t(w) * size_t(h) * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + attachment));
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out.data());
+  PT_GL_CHECK("glReadPixels (float attachment)");
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return out;
+}
+
 }  // namespace pt

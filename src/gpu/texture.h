@@ -1,5 +1,6 @@
 // RAII float textures and framebuffers: the only GL objects the renderer owns.
 #pragma once
+#include <vector>
 #include <utility>
 
 #include "gpu/gl.h"
@@ -62,5 +63,9 @@ class Framebuffer {
   void reset();
   GLuint id_ = 0;
 };
+
+// The w x h RGBA float pixels of colour attachment `attachment` (0, 1, ...) of framebuffer
+// `fbo`; leaves the default framebuffer bound and attachment 0 as the read buffer.
+std::vector<float> read_rgba_float(GLuint fbo, int attachment, int w, int h);
 
 }  // namespace pt

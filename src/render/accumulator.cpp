@@ -115,34 +115,12 @@ int Accumulator::end_tile(const Tile& t) {
   return t.spp;
 }
 
-std::vector<float> Accumulator::read_radiance() const {
-  std::vector<float> out(size_t(width_) * height_ * 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur_].id());
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
-  PT_GL_CHECK("glReadPixels (radiance)");
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  return out;
-}
+std::vector<float> Accumulator::read_radiance() const { return read_rgba_float(fbo_[cur_].id(), 0, width_, height_); }
 
-std::vector<float> Accumulator::read_variance() const {
-  std::vector<float> out(size_t(width_) * height_ * 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur_].id());
-  glReadBuffer(GL_COLOR_ATTACHMENT2);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
-  PT_GL_CHECK("glReadPixels (variance)");
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  return out;
-}
+std::vector<float> Accumulator::read_variance() const { return read_rgba_float(fbo_[cur_].id(), 2, width_, height_); }
 
 RenderCounters Accumulator::counters() const {
-  std::vector<float> px(size_t(width_) * height_ * 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur_].id());
-  glReadBuffer(GL_COLOR_ATTACHMENT1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, px.data());
-  PT_GL_CHECK("glReadPixels (counters)");
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  const std::vector<float> px = read_rgba_float(fbo_[cur_].id(), 1, width_, height_);
   RenderCounters c;
   if (samples_ == 0) return c;
   for (size_t i = 0; i < px.size(); i += 4) {

@@ -5,20 +5,6 @@
 
 namespace pt {
 
-namespace {
-
-std::vector<float> read_rgba(GLuint fbo, GLenum attachment, int w, int h) {
-  std::vector<float> out(size_t(w) * h * 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  glReadBuffer(attachment);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out.data());
-  PT_GL_CHECK("glReadPixels (error estimate)");
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  return out;
-}
-
-}  // namespace
 
 void ErrorEstimator::reset(const Accumulator& a) {
   epoch_ = a.epoch();
@@ -46,10 +32,10 @@ const ErrorEstimator::Snapshot* ErrorEstimator::usable(int samples) const {
 
 std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot* s) const {
   const int w = a.width(), h = a.height();
-  const std::vector<float> mean = read_rgba(a.current_fbo(), GL_COLOR_ATTACHMENT0, w, h);
-  const std::vector<float> var = read_rgba(a.current_fbo(), GL_COLOR_ATTACHMENT2, w, h);
+  const std::vector<float> mean = a.read_radiance();
+  const std::vector<float> var = a.read_variance();
   std::vector<float> snap;
-  if (s) snap = read_rgba(s->fbo.id(), GL_COLOR_ATTACHMENT0, w, h);
+  if (s) snap = read_rgba_float(s->fbo.id(), 0, w, h);
   return error_tiles(mean, var, s ? &snap : nullptr, w, h, a.samples(), kTile);
 }
 
