@@ -12,13 +12,14 @@
 //   the native PNG in the out folder, and prints the page's speed at 512x512 (informative).
 // Prints 'ok - NAME' or 'not ok - NAME: why' per check, then 'N passed, M failed'; exits 0
 // only if all passed.
-import { spawn, spawnSync } from "node:child_process";
+import { spawnSync } from "node:child_process";
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { inflateSync } from "node:zlib";
 import { chromium } from "playwright-core";
+import { check, run, startServer } from "./app_lib.mjs";
 
 const repo = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
 const opt = { web: "build/web", native: "build/native/pathtracer", out: "build/browser-test" };
@@ -59,28 +60,9 @@ const kStepRatio = 0.85;
 const kConvergenceRatio = 0.5;
 const kTrim = 0.01;
 
-const results = [];
-function check(name, ok, why = "") {
-  results.push(ok);
-  console.log(ok ? `ok - ${name}` : `not ok - ${name}: ${why}`);
-}
-
 const chromeArgs = ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-gpu-vsync",
                     "--disable-background-networking", "--disable-component-update", "--no-first-run",
                     "--disable-sync", "--disable-quic"];
-
-function startServer(dir) {
-  const child = spawn(process.execPath, [join(repo, "tools/serve.mjs"), dir, "0"], { stdio: ["ignore", "pipe", "inherit"] });
-  return new Promise((ok, fail) => {
-    let text = "";
-    child.stdout.on("data", (d) => {
-      text += d;
-      const m = /Serving (http:\S+)/.exec(text);
-      if (m) ok({ child, url: m[1] });
-    });
-    child.on("exit", (code) => fail(new Error(`serve.mjs exited with ${code}`)));
-  });
-}
 
 // Chromium writes 8-bit, non-interlaced RGB(A) PNGs; stb_image_write too.
 function decodePng(buf) {
@@ -168,7 +150,7 @@ async function main() {
     if (!existsSync(join(webDir, f))) throw new Error(`${join(webDir, f)} is missing: build with 'cmake --preset web && cmake --build --preset web'`);
   const native = nativeRender(join(outDir, "scene2-native.png"));  // for people to compare
 
-  const server = await startServer(webDir);
+  const server = await startServer([webDir, "0"]);
   const userDir = mkdtempSync(join(tmpdir(), "pt-chromium-"));
   const context = await chromium.launchPersistentContext(userDir, {
     executablePath: "/usr/bin/chromium", headless: true, args: chromeArgs, viewport: { width: 1280, height: 720 },
@@ -346,11 +328,4 @@ async function main() {
   }
 }
 
-try {
-  await main();
-} catch (e) {
-  check("test ran to the end", false, e.stack ?? String(e));
-}
-const passed = results.filter(Boolean).length;
-console.log(`${passed} passed, ${results.length - passed} failed`);
-process.exit(results.length > 0 && passed === results.length ? 0 : 1);
+await run(main);
