@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (preset fuzz: clang, ASan + UBSan) and runs each for a
 # bounded time from its seed corpus (tests/fuzz/corpus/<name>/ plus the malformed files
-# of its format). New inputs go to a scratch folder, so the repository is not changed.
+# of its format, and the kept corpus tests/fuzz/kept/<name>.tar.gz). New inputs go to a
+# scratch folder, so the repository is not changed.
 #   bash tools/fuzz.sh                 every target, PT_FUZZ_SECONDS (default 30) each
 #   PT_FUZZ_SECONDS=600 bash tools/fuzz.sh image     one target, longer
 # A crash stops the script (exit 1) and leaves the input in build/fuzz/artifacts/.
@@ -25,6 +26,8 @@ mkdir -p build/fuzz/artifacts
 for t in "${targets[@]}"; do
   work="build/fuzz/corpus-$t"
   mkdir -p "$work"
+  # The kept corpus (what the long runs found, minimised: tools/fuzz_device.sh) seeds it.
+  [[ -f "tests/fuzz/kept/$t.tar.gz" ]] && tar xzf "tests/fuzz/kept/$t.tar.gz" -C "$work"
   dict=()
   [[ -f "tests/fuzz/$t.dict" ]] && dict=(-dict="tests/fuzz/$t.dict")
   echo "== fuzz $t for ${seconds} s"
