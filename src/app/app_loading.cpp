@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/app.h"
+#include "gpu/gl_objects.h"
 
 namespace pt {
 namespace {
@@ -170,8 +171,10 @@ void App::apply_scene(ScenePipeline& pipe, const std::optional<Camera>& camera) 
 }
 
 void App::context_restored() {
-  // Every GL name held is stale: drop the offscreen target and the renderer (deleting
-  // stale names does nothing), then build them again from the kept scene model.
+  // Every GL name held is stale: drop the offscreen target and the renderer (their stale
+  // names are not deleted: WebGL would warn for each), then build them again from the
+  // kept scene model.
+  gl_objects::context_replaced();
   const Camera camera = renderer_->camera();
   present_fbo_ = Framebuffer();
   present_tex_ = Texture();

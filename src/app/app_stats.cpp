@@ -7,6 +7,11 @@
 #include <cstdio>
 
 #include "app/app.h"
+#include "gpu/gl_objects.h"
+
+#ifdef __EMSCRIPTEN__
+#include <malloc.h>
+#endif
 
 namespace pt {
 namespace {
@@ -176,6 +181,16 @@ std::string App::stats_json() const {
   j += ",\"files\":" + scene_files_json();
   j += "," + error_fields();
   j += ",\"selected\":" + std::to_string(selected_);
+  // What the long-use test watches (tests/browser/endurance_test.mjs): live GL objects of
+  // the wrappers, and the bytes of the wasm heap in use (dlmalloc's count; the heap's
+  // size only grows, so it says nothing about leaks).
+  j += ",\"glObjects\":{";
+  for (int k = 0; k < gl_objects::kKinds; ++k)
+    j += std::string(k ? "," : "") + "\"" + gl_objects::kNames[size_t(k)] + "\":" + std::to_string(gl_objects::live()[size_t(k)]);
+  j += "}";
+#ifdef __EMSCRIPTEN__
+  j += ",\"heapUsed\":" + std::to_string(mallinfo().uordblks);
+#endif
   if (selected_ >= 0) {
     const Shape& sh = scene_.shapes[size_t(selected_)];
     j += ",\"selectedKind\":" + json_string(info(sh.kind()).xml) + ",\"selectedLine\":" + std::to_string(sh.line);

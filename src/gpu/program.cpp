@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+#include "gpu/gl_objects.h"
+
 namespace pt {
 namespace {
 
@@ -21,6 +23,7 @@ std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
 
 GLuint start_shader(GLenum type, const ShaderSource& src) {
   GLuint s = glCreateShader(type);
+  if (s) gl_objects::created(gl_objects::kShader);
   const char* text = src.text.c_str();
   glShaderSource(s, 1, &text, nullptr);
   glCompileShader(s);
@@ -60,6 +63,7 @@ Program Program::start(const ShaderSource& vs, const ShaderSource& fs) {
   p.vs_ = start_shader(GL_VERTEX_SHADER, vs);
   p.fs_ = start_shader(GL_FRAGMENT_SHADER, fs);
   p.id_ = glCreateProgram();
+  if (p.id_) gl_objects::created(gl_objects::kProgram);
   glAttachShader(p.id_, p.vs_);
   glAttachShader(p.id_, p.fs_);
   glLinkProgram(p.id_);
@@ -74,6 +78,7 @@ Program Program::start_compute(const ShaderSource& cs) {
   p.vs_src_ = cs;
   p.vs_ = start_shader(GL_COMPUTE_SHADER, cs);
   p.id_ = glCreateProgram();
+  if (p.id_) gl_objects::created(gl_objects::kProgram);
   glAttachShader(p.id_, p.vs_);
   glLinkProgram(p.id_);
   PT_GL_CHECK("glAttachShader/glLinkProgram (compute)");
@@ -105,10 +110,12 @@ void Program::finish() {
     }
   }
   glDeleteShader(v);
-  if (f) glDeleteShader(f);
+  gl_objects::deleted(gl_objects::kShader);
+  if (f) glDeleteShader(f), gl_objects::deleted(gl_objects::kShader);
   vs_src_ = fs_src_ = ShaderSource{};
   if (!error.empty()) {
     glDeleteProgram(id_);
+    gl_objects::deleted(gl_objects::kProgram);
     id_ = 0;
     throw GlError(error);
   }
@@ -116,15 +123,22 @@ void Program::finish() {
 }
 
 Program::~Program() {
-  if (vs_) glDeleteShader(vs_);
-  if (fs_) glDeleteShader(fs_);
-  if (id_) glDeleteProgram(id_);
+  const bool live = !gl_objects::stale(made_in_);
+  for (const GLuint s : {vs_, fs_})
+    if (s) {
+      if (live) glDeleteShader(s);
+      gl_objects::deleted(gl_objects::kShader);
+    }
+  if (id_) {
+    if (live) glDeleteProgram(id_);
+    gl_objects::deleted(gl_objects::kProgram);
+  }
 }
 
 Program::Program(Program&& o) noexcept
     : id_(std::exchange(o.id_, 0u)), vs_(std::exchange(o.vs_, 0u)), fs_(std::exchange(o.fs_, 0u)),
       vs_src_(std::move(o.vs_src_)), fs_src_(std::move(o.fs_src_)), started_(o.started_),
-      locs_(std::move(o.locs_)), compile_ms_(o.compile_ms_) {}
+      locs_(std::move(o.locs_)), compile_ms_(o.compile_ms_), made_in_(o.made_in_) {}
 
 Program& Program::operator=(Program&& o) noexcept {
   if (this != &o) {
@@ -137,6 +151,7 @@ Program& Program::operator=(Program&& o) noexcept {
     started_ = o.started_;
     locs_ = std::move(o.locs_);
     compile_ms_ = o.compile_ms_;
+    made_in_ = o.made_in_;
   }
   return *this;
 }

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "gpu/gl.h"
+#include "gpu/gl_objects.h"
 #include "gpu/gl_check.h"
 #include "core/shader_source.h"
 
@@ -72,6 +73,7 @@ class Program {
   std::chrono::steady_clock::time_point started_;
   std::unordered_map<std::string, GLint> locs_;
   double compile_ms_ = 0;
+  int made_in_ = gl_objects::generation();  // names of a lost context are not deleted
 };
 
 }  // namespace pt

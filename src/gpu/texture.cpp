@@ -1,11 +1,13 @@
 #include "gpu/texture.h"
 
 #include "gpu/gl_check.h"
+#include "gpu/gl_objects.h"
 
 namespace pt {
 
 Texture::Texture(int w, int h, GLenum internal_format, const float* data) : w_(w), h_(h) {
   glGenTextures(1, &id_);
+  if (id_) gl_objects::created(gl_objects::kTexture);
   glBindTexture(GL_TEXTURE_2D, id_);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -31,12 +33,16 @@ void Texture::bind(int unit) const {
 }
 
 void Texture::reset() {
-  if (id_) glDeleteTextures(1, &id_);
+  if (id_) {
+    if (!gl_objects::stale(made_in_)) glDeleteTextures(1, &id_);
+    gl_objects::deleted(gl_objects::kTexture);
+  }
   id_ = 0;
 }
 
 Framebuffer::Framebuffer(const Texture& color) {
   glGenFramebuffers(1, &id_);
+  if (id_) gl_objects::created(gl_objects::kFramebuffer);
   glBindFramebuffer(GL_FRAMEBUFFER, id_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
   PT_GL_CHECK("glFramebufferTexture2D");
@@ -63,7 +69,10 @@ bool Framebuffer::complete() const {
 }
 
 void Framebuffer::reset() {
-  if (id_) glDeleteFramebuffers(1, &id_);
+  if (id_) {
+    if (!gl_objects::stale(made_in_)) glDeleteFramebuffers(1, &id_);
+    gl_objects::deleted(gl_objects::kFramebuffer);
+  }
   id_ = 0;
 }
 

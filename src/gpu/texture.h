@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "gpu/gl.h"
+#include "gpu/gl_objects.h"
 
 namespace pt {
 
@@ -14,13 +15,14 @@ class Texture {
   // immutable (glTexStorage2D), so a compute kernel can bind it as an image.
   Texture(int w, int h, GLenum internal_format, const float* data);
   ~Texture() { reset(); }
-  Texture(Texture&& o) noexcept : id_(std::exchange(o.id_, 0u)), w_(o.w_), h_(o.h_) {}
+  Texture(Texture&& o) noexcept : id_(std::exchange(o.id_, 0u)), w_(o.w_), h_(o.h_), made_in_(o.made_in_) {}
   Texture& operator=(Texture&& o) noexcept {
     if (this != &o) {
       reset();
       id_ = std::exchange(o.id_, 0u);
       w_ = o.w_;
       h_ = o.h_;
+      made_in_ = o.made_in_;
     }
     return *this;
   }
@@ -35,6 +37,7 @@ class Texture {
   void reset();
   GLuint id_ = 0;
   int w_ = 0, h_ = 0;
+  int made_in_ = gl_objects::generation();
 };
 
 class Framebuffer {
@@ -46,11 +49,12 @@ class Framebuffer {
   // Three colour attachments, all drawn to.
   Framebuffer(const Texture& color0, const Texture& color1, const Texture& color2);
   ~Framebuffer() { reset(); }
-  Framebuffer(Framebuffer&& o) noexcept : id_(std::exchange(o.id_, 0u)) {}
+  Framebuffer(Framebuffer&& o) noexcept : id_(std::exchange(o.id_, 0u)), made_in_(o.made_in_) {}
   Framebuffer& operator=(Framebuffer&& o) noexcept {
     if (this != &o) {
       reset();
       id_ = std::exchange(o.id_, 0u);
+      made_in_ = o.made_in_;
     }
     return *this;
   }
@@ -62,6 +66,7 @@ class Framebuffer {
  private:
   void reset();
   GLuint id_ = 0;
+  int made_in_ = gl_objects::generation();
 };
 
 // The w x h RGBA float pixels of colour attachment `attachment` (0, 1, ...) of framebuffer

@@ -1,9 +1,12 @@
 #include "gpu/texture_array.h"
 
+#include "gpu/gl_objects.h"
+
 namespace pt {
 
 TextureArray::TextureArray(int width, int height, int layers, const float* rgba) {
   glGenTextures(1, &id_);
+  if (id_) gl_objects::created(gl_objects::kTexture);
   glBindTexture(GL_TEXTURE_2D_ARRAY, id_);
   // No mipmaps: a path tracer's secondary rays have no screen-space footprint to pick a
   // level from; the progressive average over the pixel does the filtering.
@@ -21,7 +24,10 @@ void TextureArray::bind(int unit) const {
 }
 
 void TextureArray::reset() {
-  if (id_) glDeleteTextures(1, &id_);
+  if (id_) {
+    if (!gl_objects::stale(made_in_)) glDeleteTextures(1, &id_);
+    gl_objects::deleted(gl_objects::kTexture);
+  }
   id_ = 0;
 }
 

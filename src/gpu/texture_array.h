@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "gpu/gl.h"
+#include "gpu/gl_objects.h"
 
 namespace pt {
 
@@ -13,11 +14,12 @@ class TextureArray {
   // `rgba` holds layers * height rows of width RGBA floats (converted to half floats).
   TextureArray(int width, int height, int layers, const float* rgba);
   ~TextureArray() { reset(); }
-  TextureArray(TextureArray&& o) noexcept : id_(std::exchange(o.id_, 0u)) {}
+  TextureArray(TextureArray&& o) noexcept : id_(std::exchange(o.id_, 0u)), made_in_(o.made_in_) {}
   TextureArray& operator=(TextureArray&& o) noexcept {
     if (this != &o) {
       reset();
       id_ = std::exchange(o.id_, 0u);
+      made_in_ = o.made_in_;
     }
     return *this;
   }
@@ -33,6 +35,7 @@ class TextureArray {
  private:
   void reset();
   GLuint id_ = 0;
+  int made_in_ = gl_objects::generation();
 };
 
 }  // namespace pt

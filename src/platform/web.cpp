@@ -40,6 +40,7 @@ void frame() {
   const ContextState context = pt::web::context_state();
   if (context == ContextState::Lost) return;  // nothing can be drawn until the browser restores it
   if (context == ContextState::Restored) {
+    pt::web::forget_lost_objects();
     pt::web::enable_extensions();
     pt::web::imgui_context_restored();
     g_app->context_restored();

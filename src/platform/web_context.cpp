@@ -18,6 +18,15 @@ EM_JS(char*, pt_js_gl_renderer, (), {
 EM_JS(int, pt_js_context_state, (), { return Module.ptContextState | 0; });
 EM_JS(void, pt_js_context_rebuilt, (), { Module.ptContextState = 0; });
 
+// Emscripten's tables from GL names to WebGL objects still hold the lost context's
+// objects: dropped, so they can be collected (deleting them on the new context would only
+// make WebGL warn, once per object).
+EM_JS(void, pt_js_forget_lost_objects, (), {
+  for (const table of [GL.buffers, GL.programs, GL.framebuffers, GL.renderbuffers, GL.textures, GL.shaders,
+                       GL.vaos, GL.queries, GL.samplers, GL.syncs])
+    if (table) table.fill(null);
+});
+
 // KHR_parallel_shader_compile lets the driver compile in the background (gpu/program.cpp
 // polls it); the timer query times draws where the browser allows it.
 EM_JS(void, pt_js_enable_extensions, (), {
@@ -39,6 +48,7 @@ std::string gl_renderer() {
 
 ContextState context_state() { return ContextState(pt_js_context_state()); }
 void context_rebuilt() { pt_js_context_rebuilt(); }
+void forget_lost_objects() { pt_js_forget_lost_objects(); }
 void enable_extensions() { pt_js_enable_extensions(); }
 
 }  // namespace pt::web

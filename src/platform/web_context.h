@@ -12,6 +12,9 @@ enum class ContextState { Usable = 0, Lost = 1, Restored = 2 };  // Restored: no
 std::string gl_renderer();
 ContextState context_state();
 void context_rebuilt();  // after every GL object was made again on the restored context
+// On a restored context, before anything is made: the lost context's objects are
+// forgotten (the wrappers then drop their names without deleting: gpu/gl_objects.h).
+void forget_lost_objects();
 // WebGL extensions are off until asked for: ask again on a restored context (Emscripten
 // enables its defaults only when it creates one).
 void enable_extensions();

@@ -9,6 +9,8 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "gpu/gl.h"
+
 namespace pt::web {
 namespace {
 
@@ -39,7 +41,8 @@ void imgui_init(GLFWwindow* window) {
 }
 
 void imgui_context_restored() {
-  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplOpenGL3_Shutdown();  // its deletes of forgotten names do nothing: the
+  glGetError();                  // program's and shaders' leave GL_INVALID_VALUE, cleared
   ImGui_ImplOpenGL3_Init("#version 300 es");
 }
 

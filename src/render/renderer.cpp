@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "gpu/gl_objects.h"
 #include "render/camera.h"
 #include "render/image_maps.h"
 #include "render/packing.h"
@@ -25,6 +26,7 @@ GlLimits checked_limits() {
 GLuint make_vertex_array() {
   GLuint vao = 0;
   glGenVertexArrays(1, &vao);
+  if (vao) gl_objects::created(gl_objects::kVertexArray);
   return vao;
 }
 
@@ -41,7 +43,10 @@ Renderer::Renderer() : limits_(checked_limits()), vao_(make_vertex_array()), dis
 }
 
 Renderer::~Renderer() {
-  if (vao_) glDeleteVertexArrays(1, &vao_);
+  if (vao_) {
+    if (!gl_objects::stale(vao_made_in_)) glDeleteVertexArrays(1, &vao_);
+    gl_objects::deleted(gl_objects::kVertexArray);
+  }
 }
 
 Features Renderer::features_for(const Scene& scene, RenderMode mode) const {

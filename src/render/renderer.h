@@ -10,6 +10,7 @@
 
 #include "core/render_mode.h"
 #include "core/tonemap.h"
+#include "gpu/gl_objects.h"
 #include "render/accumulator.h"
 #include "render/display.h"
 #include "render/error_estimator.h"
@@ -140,6 +141,7 @@ class Renderer {
   void select_program();  // the cached (or newly built) program for features_ + settings_.mode
   GlLimits limits_;       // first: the constructor checks them before building anything
   GLuint vao_ = 0;        // the fullscreen triangle's (no attributes)
+  int vao_made_in_ = gl_objects::generation();
   Display display_;
   Accumulator accum_;
   ErrorEstimator error_;  // snapshots of accum_'s mean for its error estimate

@@ -96,6 +96,11 @@ void SceneTextures::set_environment(const Environment& env, RenderMode mode) {
     }
     env_rotation_ = glm::radians(env.rotation);
     env_intensity_ = env.intensity;
+  } else {
+    // No map: its textures and the image go (the long-use test watches for what stays).
+    env_tex_ = Texture();
+    env_cdf_tex_ = Texture();
+    env_source_.reset();
   }
   update_sh(mode);
 }

@@ -1,6 +1,6 @@
 // Shared by the page's application tests (app_test.mjs, load_test.mjs): options, the
 // result list, the dev server, Chromium's flags, and helpers to open and poll the page.
-import { spawn } from "node:child_process";
+import { spawn, spawnSync } from "node:child_process";
 import { existsSync, renameSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
@@ -95,3 +95,27 @@ export function checkWebBuild(webDir) {
 }
 export const launcher = (userDir) => (extra) =>
   chromium.launchPersistentContext(userDir, { executablePath: "/usr/bin/chromium", headless: true, args: chromeArgs, ...extra });
+
+// The native headless render of a scene file (its mean radiance, from the CLI's report).
+export function nativeMean(nativeBin, scenePath, w, h, samples, outPng) {
+  if (!existsSync(nativeBin))
+    return { error: `native binary ${nativeBin} not found: build it with 'cmake --preset native && cmake --build --preset native'` };
+  const r = spawnSync(nativeBin, ["render", scenePath, "--spp", String(samples), "--size", `${w}x${h}`,
+                                  "--out", outPng], { encoding: "utf8" });
+  const m = /mean radiance: ([-+.\deE]+) ([-+.\deE]+) ([-+.\deE]+)/.exec(r.stdout ?? "");
+  if (r.status !== 0 || !m) return { error: `native render failed (${r.status}): ${r.stderr || r.stdout}` };
+  return { mean: m.slice(1, 4).map(Number) };
+}
+
+// The relative standard error of an image's mean luminance from the page's radiance
+// read-back (RGBA floats; alpha is each pixel's running mean of squared luminance).
+export function meanStdError(px, samples) {
+  let lum = 0, variance = 0;
+  const n = px.length / 4;
+  for (let i = 0; i < px.length; i += 4) {
+    const l = 0.2126 * px[i] + 0.7152 * px[i + 1] + 0.0722 * px[i + 2];
+    lum += l;
+    variance += Math.max(0, px[i + 3] - l * l);
+  }
+  return Math.sqrt(variance / samples) / n / (lum / n);
+}

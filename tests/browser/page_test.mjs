@@ -12,14 +12,13 @@
 //   the native PNG in the out folder, and prints the page's speed at 512x512 (informative).
 // Prints 'ok - NAME' or 'not ok - NAME: why' per check, then 'N passed, M failed'; exits 0
 // only if all passed.
-import { spawnSync } from "node:child_process";
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { inflateSync } from "node:zlib";
 import { chromium } from "playwright-core";
-import { check, run, startServer } from "./app_lib.mjs";
+import { check, meanStdError, nativeMean, run, startServer } from "./app_lib.mjs";
 
 const repo = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
 const opt = { web: "build/web", native: "build/native/pathtracer", out: "build/browser-test" };
@@ -91,15 +90,8 @@ function decodePng(buf) {
   return { width, height, ch, at: (x, y, k) => px[(y * width + x) * ch + k] };
 }
 
-function nativeRender(outPng, sceneName = scene, w = size, h = size, samples = spp) {
-  if (!existsSync(nativeBin))
-    return { error: `native binary ${nativeBin} not found: build it with 'cmake --preset native && cmake --build --preset native'` };
-  const r = spawnSync(nativeBin, ["render", join(repo, "scenes", sceneName), "--spp", String(samples), "--size", `${w}x${h}`,
-                                  "--out", outPng], { encoding: "utf8" });
-  const m = /mean radiance: ([-+.\deE]+) ([-+.\deE]+) ([-+.\deE]+)/.exec(r.stdout ?? "");
-  if (r.status !== 0 || !m) return { error: `native render failed (${r.status}): ${r.stderr || r.stdout}` };
-  return { mean: m.slice(1, 4).map(Number) };
-}
+const nativeRender = (outPng, sceneName = scene, w = size, h = size, samples = spp) =>
+  nativeMean(nativeBin, join(repo, "scenes", sceneName), w, h, samples, outPng);
 
 async function openPage(context, url, errors) {
   const page = await context.newPage();
@@ -133,17 +125,6 @@ function trimmedSquaredChange(a, b) {
 }
 
 // Standard error of the image's mean luminance from the per-pixel second moment (alpha).
-function meanStdError(px, samples) {
-  let lum = 0, variance = 0;
-  const n = px.length / 4;
-  for (let i = 0; i < px.length; i += 4) {
-    const l = 0.2126 * px[i] + 0.7152 * px[i + 1] + 0.0722 * px[i + 2];
-    lum += l;
-    variance += Math.max(0, px[i + 3] - l * l);
-  }
-  return Math.sqrt(variance / samples) / n / (lum / n);
-}
-
 async function main() {
   mkdirSync(outDir, { recursive: true });
   for (const f of ["index.html", "pathtracer.js", "pathtracer.wasm", "pathtracer.data"])
