@@ -87,6 +87,8 @@ TEST_CASE("docs/scenes.md lists every shipped scene with its generated shader's 
     }
     for (int i = 0; i < kNumMaterialKinds; ++i)
       if (k.has(MaterialKind(i))) materials += std::string(materials.empty() ? "" : ", ") + kMaterialKinds[i].xml;
+    for (int i = 0; i < kNumLightKinds; ++i)
+      if (k.has(LightKind(i))) lights += std::string(lights.empty() ? "" : ", ") + kLightKinds[i].xml;
     if (k.env_map) lights += std::string(lights.empty() ? "" : ", ") + "environment map";
     table += "| `" + f + "` | " + shapes + " | " + materials + " | " + (lights.empty() ? "-" : lights) + " | " +
              std::to_string(generate_integrator(k).text.size()) + " |\n";
