@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Light selection, before vs after (issue 17, "Samples that add nothing"): for each scene,
 the fraction of exactly black pixels at 2, 3 and 5 spp, and the relMSE at equal spp
-(16 and 64) against a reference, for one or more pathtracer binaries.
+(--spp, default 16 and 64) against a reference, for one or more pathtracer binaries.
 
     python3 tools/light_selection_stats.py --bin before=/tmp/pt-main --bin after=build/native/pathtracer \\
         [--size 160x120] [--ref-spp 4096] [--out /tmp/lightsel] [scene.xml ...]
@@ -43,14 +43,16 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--bin", action="append", required=True, help="NAME=PATH")
     ap.add_argument("--size", default="160x120")
+    ap.add_argument("--spp", default="16,64", help="the sample counts of the relMSE columns")
     ap.add_argument("--ref-spp", type=int, default=4096)
     ap.add_argument("--out", default="/tmp/lightsel")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
     bins = [b.split("=", 1) for b in a.bin]
     os.makedirs(a.out, exist_ok=True)
-    print("| scene | binary | black 2 spp | black 3 spp | black 5 spp | relMSE 16 spp | relMSE 64 spp |")
-    print("|---|---|---|---|---|---|---|")
+    rel = [int(v) for v in a.spp.split(",")]
+    print("| scene | binary | black 2 spp | black 3 spp | black 5 spp | " + " | ".join("relMSE %d spp" % v for v in rel) + " |")
+    print("|---|---|---|---|---|" + "---|" * len(rel))
     for scene in a.scenes or DEFAULT_SCENES:
         stem = scene.replace("/", "-").replace(".xml", "")
         ref_path = os.path.join(a.out, "%s-ref-%s-%d.pfm" % (stem, a.size, a.ref_spp))
@@ -65,7 +67,7 @@ def main():
                 px = len(x) // 3
                 black = sum(1 for i in range(px) if x[3 * i] == 0 and x[3 * i + 1] == 0 and x[3 * i + 2] == 0) / px
                 cells.append("%.2f%%" % (100 * black))
-            for spp in (16, 64):
+            for spp in [int(v) for v in a.spp.split(",")]:
                 x = render(binary, scene, spp, a.size, tmp)
                 cells.append("%.4g" % (sum((xi - ri) ** 2 / (ri * ri + 0.01) for xi, ri in zip(x, ref)) / len(x)))
             print("| %s | %s | %s |" % (scene, name, " | ".join(cells)), flush=True)
