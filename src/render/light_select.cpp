@@ -50,7 +50,8 @@ float scene_radius(const Scene& scene) {
     b.grow(k.lo);
     b.grow(k.hi);
   }
-  if (!(b.lo.x <= b.hi.x)) return 1e-3f;
+  // Only unbounded shapes (planes): the camera's distance from the origin sets the scale.
+  if (!(b.lo.x <= b.hi.x)) return std::max(1.0f, glm::length(scene.camera.position));
   return std::max(0.5f * glm::length(b.hi - b.lo), 1e-3f);
 }
 

@@ -60,8 +60,9 @@ void pack_lights(const Scene& scene, const std::vector<int>& shapes, RecordBuffe
 bool camera_sealed_off(const std::vector<glm::vec3>& seal_lo, const std::vector<glm::vec3>& seal_hi, glm::vec3 position,
                        float aperture);
 
-// The radius of a sphere about the bounded shapes' box (at least 1e-3): a directional
-// light's power is its flux through it.
+// The radius of a sphere about the bounded shapes' box (at least 1e-3; with no bounded
+// shape, the camera's distance from the origin, at least 1): a directional light's power
+// is its flux through it.
 float scene_radius(const Scene& scene);
 
 }  // namespace pt
