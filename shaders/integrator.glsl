@@ -1,7 +1,8 @@
 // integrator.glsl: the progressive path tracer's fragment program. Each fragment traces
 // u_spp camera paths through its pixel and blends their mean into the running mean of
 // the previous pass (ping-pong). Unbiased: next-event estimation to emissive shapes,
-// combined with BSDF sampling by the power heuristic; Russian roulette after 3 bounces.
+// combined with BSDF sampling by the power heuristic, and to punctual lights (delta: NEE
+// alone, weight 1); Russian roulette after 3 bounces.
 #include "camera_pass.glsl"
 
 vec3 trace_path(Ray r) {
@@ -49,8 +50,13 @@ vec3 trace_path(Ray r) {
         vec3 f = material_eval(m, wo, wl, entering, pdf_b);
         if (!surface_sides_agree(sf, ls.wi, wl)) f = vec3(0.0);
         if (max3(f) > 0.0) {
+#ifdef HAS_PUNCTUAL
+          float w = ls.delta ? 1.0 : power_heuristic(ls.pdf, pdf_b);  // a delta light: no BSDF sample reaches it
+#else
+          float w = power_heuristic(ls.pdf, pdf_b);
+#endif
           if (light_visible(p, n, ls.wi, ls.dist, ls.shape))
-            L += beta * f * ls.radiance * (power_heuristic(ls.pdf, pdf_b) / ls.pdf);
+            L += beta * f * ls.radiance * (w / ls.pdf);
         }
       }
     }

@@ -9,8 +9,10 @@
 //     Textured: (1 - s) rho + s; other kinds are shaded as if Lambertian with their
 //     tint; Emit+Absorb shows only its emission).
 // As in the classic technique, visibility is ignored: no shadows, no occlusion, no
-// interreflection, and the scene's own emitters (lights, Emit) light nothing: only the
-// environment illuminates. The bounce limit does not apply (one hit).
+// interreflection, and the scene's own emitting shapes (<Light>, Emit) light nothing:
+// the environment illuminates, and so do the punctual lights (point, spot, directional:
+// albedo * E * max(cos, 0) / pi from each, their closed-form irradiance, unshadowed).
+// The bounce limit does not apply (one hit).
 #include "camera_pass.glsl"
 #include "sh.glsl"
 
@@ -26,5 +28,14 @@ vec3 trace_path(Ray r) {
   Surface sf = surface_hit(r, h);
   if (sf.absorbs) return sf.emission;
   surface_resolve(sf, r, h, next4().x);
-  return sf.emission + material_albedo(sf.m) * sh_irradiance(sf.fr.n) * INV_PI;
+  vec3 E = sh_irradiance(sf.fr.n);
+#ifdef HAS_PUNCTUAL
+  for (int li = 0; li < u_num_lights; ++li) {
+    LightRec l = load_light(li);
+    vec3 wi, e;
+    float dist;
+    if (l.shape < 0 && punctual_sample(l, h.p, wi, dist, e)) E += e * max(dot(sf.fr.n, wi), 0.0);
+  }
+#endif
+  return sf.emission + material_albedo(sf.m) * E * INV_PI;
 }

@@ -12,7 +12,8 @@
 //   - at a non-delta surface (Diffuse, textures, PhongSpecular, rough Metal): direct
 //     light only, then the ray stops (no indirect light): every light-sampled emitter
 //     (each <Light> and emitting box, triangle or sphere) gets one sample point and one
-//     shadow ray per camera sample, f * Le / pdf when unoccluded; and the environment
+//     shadow ray per camera sample, f * Le / pdf when unoccluded; each punctual light
+//     (point, spot, directional) one shadow ray, f * E when unoccluded; and the environment
 //     one sample (a map: importance-sampled by luminance; a constant colour: a BSDF-
 //     sampled direction) that counts when its shadow ray leaves the scene.
 // Each delta or non-delta surface counts as one bounce; at the bounce limit the ray ends
@@ -38,8 +39,19 @@ vec3 whitted_direct(Surface sf, vec3 p) {
   float pdf_b;
   for (int li = 0; li < u_num_lights; ++li) {
     LightRec l = load_light(li);
+    if (l.pmf == 0.0 && u_lights_uniform == 0) continue;  // sealed off from the camera (render/light_select.h)
     vec3 wi;
     float pdf, dist;
+#ifdef HAS_PUNCTUAL
+    if (l.shape < 0) {  // a punctual light: its irradiance when its shadow ray is clear
+      vec3 e;
+      if (!punctual_sample(l, p, wi, dist, e)) continue;
+      vec3 wl = to_local(fr, wi);
+      vec3 f = surface_sides_agree(sf, wi, wl) ? material_eval(m, wo, wl, entering, pdf_b) : vec3(0.0);
+      if (max3(f) > 0.0 && light_visible(p, n, wi, dist, -1)) L += f * e;
+      continue;
+    }
+#endif
     if (!light_sample_shape(load_shape(l.shape), p, next4().xy, wi, pdf, dist) || !(pdf > 0.0)) continue;
     vec3 wl = to_local(fr, wi);
     vec3 f = surface_sides_agree(sf, wi, wl) ? material_eval(m, wo, wl, entering, pdf_b) : vec3(0.0);

@@ -87,6 +87,8 @@ TEST_CASE("docs/scenes.md lists every shipped scene with its generated shader's 
     }
     for (int i = 0; i < kNumMaterialKinds; ++i)
       if (k.has(MaterialKind(i))) materials += std::string(materials.empty() ? "" : ", ") + kMaterialKinds[i].xml;
+    for (int i = 0; i < kNumLightKinds; ++i)
+      if (k.has(LightKind(i))) lights += std::string(lights.empty() ? "" : ", ") + kLightKinds[i].xml;
     if (k.env_map) lights += std::string(lights.empty() ? "" : ", ") + "environment map";
     table += "| `" + f + "` | " + shapes + " | " + materials + " | " + (lights.empty() ? "-" : lights) + " | " +
              std::to_string(generate_integrator(k).text.size()) + " |\n";
@@ -101,12 +103,13 @@ TEST_CASE("docs/scenes.md lists every shipped scene with its generated shader's 
 
 // The fuzzer's dictionary (tests/fuzz/scene_xml.dict) names every kind of the lists, so
 // mutations reach each kind's parser: a kind added without its entry fails here.
-TEST_CASE("the scene fuzzer's dictionary names every shape and material kind", "[loader][docs]") {
+TEST_CASE("the scene fuzzer's dictionary names every shape, material and light kind", "[loader][docs]") {
   const auto dict = read_file(repo_path("tests/fuzz/scene_xml.dict"));
   REQUIRE(dict);
   std::vector<const char*> names;
   for (const KindInfo& k : kShapeKinds) names.push_back(k.xml);
   for (const MaterialKindInfo& k : kMaterialKinds) names.push_back(k.xml);
+  for (const LightKindInfo& k : kLightKinds) names.push_back(k.xml);
   for (const char* n : names) {
     INFO("missing \"<" << n << "\" in tests/fuzz/scene_xml.dict");
     CHECK(dict->find("\"<" + std::string(n)) != std::string::npos);

@@ -2,7 +2,7 @@
 """Layers point down (DESIGN.md): reads every #include of a project header under src/ and
 fails on an arrow against the order
 
-    core < {scene, shapes, materials, accel} < {shadergen, gpu} < render < app < platform < cli
+    core < {scene, shapes, materials, accel, lights} < {shadergen, gpu} < render < app < platform < cli
 
 where a folder may include itself and every layer below, never a layer above nor another
 folder of its own layer (the folders of a layer do not know each other: gpu compiles plain
@@ -19,7 +19,7 @@ import sys
 
 RANK = {
     "core": 0,
-    "scene": 1, "shapes": 1, "materials": 1, "accel": 1,
+    "scene": 1, "shapes": 1, "materials": 1, "accel": 1, "lights": 1,
     "shadergen": 2, "gpu": 2,
     "render": 3,
     "app": 4,
@@ -28,9 +28,10 @@ RANK = {
 }
 FORBIDDEN = {("cli", "app")}  # cli is on top but never reaches the UI
 # Sideways arrows within a layer that are part of the design: the scene model holds each
-# material kind's and each shape kind's parameters (materials/all.h, shapes/all.h: the
+# material kind's, each shape kind's and each light kind's parameters (materials/all.h,
+# shapes/all.h, lights/all.h: the
 # kinds know nothing of scenes).
-ALLOWED_SIDEWAYS = {("scene", "materials"), ("scene", "shapes")}
+ALLOWED_SIDEWAYS = {("scene", "materials"), ("scene", "shapes"), ("scene", "lights")}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
 

@@ -226,7 +226,43 @@ def tests():
         g.write()
 
 
+def punctual_lights():
+    """KHR_lights_punctual: a grey floor and three spheres under a warm point light (with a
+    range), a blue-white spot aimed down at the middle sphere and a dim directional light,
+    seen by a camera node (docs/gltf.md: candela and lux taken 1:1 as our units)."""
+    g = Gltf("punctual-lights")
+    floor = g.material({"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": [0.6, 0.6, 0.6, 1], "metallicFactor": 0,
+                        "roughnessFactor": 0.9}})
+    q = quad(3.0)  # kept alive: the accessor cache is keyed by id()
+    mesh = g.mesh(*q, floor)
+    g.doc["nodes"].append({"mesh": mesh, "rotation": [-0.70710678, 0, 0, 0.70710678]})  # z = 0 facing +z -> y = 0 facing +y
+    g.doc["scenes"][0]["nodes"].append(len(g.doc["nodes"]) - 1)
+    s = sphere(0.4)
+    for i, colour in enumerate(([0.8, 0.2, 0.15, 1], [0.85, 0.85, 0.85, 1], [0.15, 0.3, 0.8, 1])):
+        m = g.material({"name": "ball%d" % i, "pbrMetallicRoughness": {"baseColorFactor": colour, "metallicFactor": 0,
+                        "roughnessFactor": 0.4}})
+        g.node(g.mesh(*s, m), (1.2 * (i - 1), 0.4, 0))
+    g.doc["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"name": "warm point", "type": "point", "color": [1.0, 0.6, 0.3], "intensity": 40.0, "range": 8.0},
+        {"name": "spot", "type": "spot", "color": [0.6, 0.8, 1.0], "intensity": 250.0,
+         "spot": {"innerConeAngle": 0.15, "outerConeAngle": 0.3}},
+        {"name": "sun", "type": "directional", "intensity": 2.0}]}}
+    g.used.add("KHR_lights_punctual")
+    light_nodes = [{"translation": [-1.6, 1.8, 1.0], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+                   # pointing down: -z turned -90 degrees about +x
+                   {"translation": [0, 3.0, 0], "rotation": [-0.70710678, 0, 0, 0.70710678], "extensions": {"KHR_lights_punctual": {"light": 1}}},
+                   # the sun from the upper right behind the camera: -z turned -50 degrees about +x, then 30 about +y
+                   {"rotation": [-0.40821789, 0.23456972, 0.10938165, 0.8754261], "extensions": {"KHR_lights_punctual": {"light": 2}}}]
+    g.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.75, "znear": 0.1}}]
+    light_nodes.append({"camera": 0, "translation": [0, 1.6, 4.2], "rotation": [-0.17364818, 0, 0, 0.98480775]})  # pitched 20 down
+    for n in light_nodes:
+        g.doc["nodes"].append(n)
+        g.doc["scenes"][0]["nodes"].append(len(g.doc["nodes"]) - 1)
+    g.write()
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     showcase()
     tests()
+    punctual_lights()

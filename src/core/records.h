@@ -61,9 +61,18 @@
   F(float, v, 1, 0) F(float, u1, 1, 1) F(float, v1, 1, 2) F(float, alpha, 1, 3) \
   F(vec3, color, 2, 0)
 
-// A light is an emissive shape of a samplable kind; its geometry stays in the shape record.
+// A light that next-event estimation samples: an emissive shape of a samplable kind
+// (shape >= 0: its shape record, which holds the geometry; radiance: its emitted
+// radiance) or a punctual light (shape = -1 - its LightKind, lights/light.h: radiance is
+// colour x intensity, and the kind uses position, direction, range and the cone's
+// cosines). pmf, alias_p and alias: the light selection's alias table (Walker/Vose,
+// render/light_select.h): slot i is chosen uniformly, then kept with probability alias_p,
+// else its alias is taken; pmf is the probability that a light is selected.
 #define PT_LIGHT_RECORD(F) \
-  F(vec3, radiance, 0, 0) F(int, shape, 0, 3)
+  F(vec3, radiance, 0, 0) F(int, shape, 0, 3) \
+  F(vec3, position, 1, 0) F(float, range, 1, 3) \
+  F(vec3, direction, 2, 0) F(float, cos_inner, 2, 3) \
+  F(float, pmf, 3, 0) F(float, alias_p, 3, 1) F(int, alias, 3, 2) F(float, cos_outer, 3, 3)
 
 namespace pt {
 
@@ -97,7 +106,7 @@ struct RecordLayout {
 #define PT_RECORDS(X)                 \
   X(shape, 4, PT_SHAPE_RECORD)        \
   X(material, 4, PT_MATERIAL_RECORD)  \
-  X(light, 1, PT_LIGHT_RECORD)        \
+  X(light, 4, PT_LIGHT_RECORD)        \
   X(node, 2, PT_NODE_RECORD)          \
   X(prim, 4, PT_PRIM_RECORD)          \
   X(vertex, 4, PT_VERTEX_RECORD)      \

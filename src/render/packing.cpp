@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "core/error.h"
+#include "render/light_select.h"
 #include "shapes/triangle.h"
 
 namespace pt {
@@ -27,20 +28,19 @@ void pack_materials(const Scene& scene, PackedScene& p) {
   }
 }
 
+// Emitters of samplable kinds become lights for next-event estimation, then the punctual
+// lights (render/light_select.h: their records and the selection by power).
 void pack_shapes(const Scene& scene, PackedScene& p) {
+  const std::vector<int> lights = sampled_light_shapes(scene);
+  pack_lights(scene, lights, p.lights, p.seal_lo, p.seal_hi);
+  std::vector<int> light_of(scene.shapes.size(), -1);
+  for (size_t k = 0; k < lights.size(); ++k) light_of[size_t(lights[k])] = int(k);
   for (const Shape& s : scene.shapes) {
     namespace f = shape_rec;
     const int i = p.shapes.add();
     p.shapes.set(i, f::kind, int(s.kind()));
     p.shapes.set(i, f::material, s.material);
-    // Emitters of samplable kinds become lights for next-event estimation.
-    int light = -1;
-    if (is_sampled_light(scene, s)) {
-      light = p.lights.add();
-      p.lights.set(light, light_rec::radiance, scene.materials[size_t(s.material)].emission);
-      p.lights.set(light, light_rec::shape, i);
-    }
-    p.shapes.set(i, f::light, light);
+    p.shapes.set(i, f::light, light_of[size_t(i)]);
     pack_shape(s.params, p.shapes, i, {f::kPayload, f::kPayloadSlots});  // the kind's own fields
   }
 }
@@ -88,9 +88,8 @@ void mesh_triangle(const Scene& scene, const Shape& s, size_t tri, glm::vec3 out
 }
 
 std::vector<int> light_shapes(const Scene& scene) {
-  std::vector<int> out;
-  for (size_t i = 0; i < scene.shapes.size(); ++i)
-    if (is_sampled_light(scene, scene.shapes[i])) out.push_back(int(i));
+  std::vector<int> out = sampled_light_shapes(scene);
+  for (const PunctualLight& l : scene.punctual) out.push_back(-1 - int(l.kind()));
   return out;
 }
 

@@ -27,6 +27,9 @@ struct PackedScene {
   // each analytic shape's or lone triangle's primitive (-1: none). A PackedScene of
   // pack_values has none of them.
   std::vector<int> light_shape;
+  // The boxes that seal lights off (render/light_select.h): light selection is by power
+  // while the camera is outside all of them, uniform while inside one.
+  std::vector<glm::vec3> seal_lo, seal_hi;
   std::vector<int> node_parent, node_first, node_count, prim_leaf, prim_shape, shape_prim;
 };
 
@@ -46,7 +49,8 @@ PackedScene pack_scene(const Scene& scene);  // runs a PackJob to completion
 bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>& prims, std::vector<int>& nodes);
 
 // The shape of each light record, in record order: the emitters that pack_shapes makes
-// lights of (sampled by next-event estimation).
+// lights of (sampled by next-event estimation: sampled_light_shapes), then -1 - the kind
+// of each punctual light (Scene::punctual).
 std::vector<int> light_shapes(const Scene& scene);
 
 // Only the shape, material and light records (no BVH, primitives or vertices): what an

@@ -9,6 +9,7 @@
 #include "gpu/gl_objects.h"
 #include "render/camera.h"
 #include "render/image_maps.h"
+#include "render/light_select.h"
 #include "render/packing.h"
 #include "render/staged_scene.h"
 #include "render/texture_units.h"
@@ -97,6 +98,7 @@ void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* 
   }
   have_scene_ = true;
   scene_.set(scene, p, *staged, textured ? &maps : nullptr);
+  seal_lo_ = p.seal_lo, seal_hi_ = p.seal_hi;
   bvh_stats_ = {p.prims.count() - p.unbounded, p.nodes.count(), p.bvh_depth, p.bvh_build_ms};
   scene_.set_environment(scene.environment, settings_.mode);
   camera_ = scene.camera;
@@ -111,13 +113,15 @@ bool Renderer::update_geometry(const Scene& scene, const PackedScene& p, const s
 
 bool Renderer::update_values(const Scene& scene) {
   const Features f = Features::of(scene);  // the program must stay the same
-  if (!have_scene_ || f.shapes != features_.shapes || f.materials != features_.materials || f.lights != features_.lights ||
+  if (!have_scene_ || f.shapes != features_.shapes || f.materials != features_.materials || f.lights != features_.lights || f.punctual != features_.punctual ||
       f.env_map != features_.env_map || f.motion != features_.motion)
     return false;
   // Another environment map is an upload of it (set_environment), when it fits this GPU;
   // else set_scene says why.
   if (const auto& m = scene.environment.map; m && std::max(m->width, m->height) + 1 > limits_.max_texture_size) return false;
-  if (!scene_.update_values(pack_values(scene), light_shapes(scene))) return false;
+  const PackedScene v = pack_values(scene);
+  if (!scene_.update_values(v, light_shapes(scene))) return false;
+  seal_lo_ = v.seal_lo, seal_hi_ = v.seal_hi;
   scene_.set_environment(scene.environment, settings_.mode);
   restart();
   return true;
@@ -171,6 +175,7 @@ int Renderer::step() {
   p.set("u_cam_up", cb.up);
   p.set("u_size", glm::vec2(float(w), float(h)));
   p.set("u_lens_radius", camera_.aperture);
+  p.set("u_lights_uniform", camera_sealed_off(seal_lo_, seal_hi_, camera_.position, camera_.aperture) ? 1 : 0);
   p.set("u_focal_distance", camera_.focal_distance);
   // Moving spheres are bounded over [0, motion_bound].
   p.set("u_shutter", std::min(camera_.shutter, scene_.motion_bound()));

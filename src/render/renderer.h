@@ -155,6 +155,7 @@ class Renderer {
   long last_draw_samples_ = 0;
   BvhStats bvh_stats_;
   Camera camera_;
+  std::vector<glm::vec3> seal_lo_, seal_hi_;  // PackedScene's boxes that seal lights off (u_lights_uniform)
   RenderSettings settings_;
 };
 

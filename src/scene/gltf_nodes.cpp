@@ -143,6 +143,53 @@ Resumable primitive(const tinygltf::Model& model, const Reader& r, MeshCache& ca
   out = slot;
 }
 
+// The punctual light of node n (KHR_lights_punctual), at its world transform's origin,
+// pointing down its -z (the extension: scale does not change the light's properties).
+// Units: a glTF intensity (candela for point and spot, lux for directional) becomes our
+// radiant intensity (irradiance) one to one (kGltfLightUnit, docs/gltf.md).
+constexpr float kGltfLightUnit = 1.0f;
+
+void node_light(const tinygltf::Model& model, const Reader& r, const tinygltf::Node& n, const glm::mat4& world,
+                const std::string& at, std::vector<PunctualLight>& out) {
+  const auto e = n.extensions.find("KHR_lights_punctual");
+  if (e == n.extensions.end()) return;
+  const std::string xat = at + "/extensions/KHR_lights_punctual";
+  if (!e->second.IsObject() || !e->second.Has("light") || !e->second.Get("light").IsNumber())
+    r.fail(xat, "needs the index of a light ('light')");
+  const int li = e->second.Get("light").GetNumberAsInt();
+  if (li < 0 || size_t(li) >= model.lights.size()) r.fail(xat + "/light", "no light " + std::to_string(li));
+  const tinygltf::Light& l = model.lights[size_t(li)];
+  const std::string lat = "/extensions/KHR_lights_punctual/lights/" + std::to_string(li);
+  glm::vec3 color(1.0f);
+  if (!l.color.empty()) {
+    if (l.color.size() != 3) r.fail(lat + "/color", "must have 3 components");
+    color = glm::vec3(float(l.color[0]), float(l.color[1]), float(l.color[2]));
+    if (!(color.x >= 0.0f && color.y >= 0.0f && color.z >= 0.0f && color.x <= 1e9f && color.y <= 1e9f && color.z <= 1e9f))
+      r.fail(lat + "/color", "must be finite and >= 0");
+  }
+  if (!(l.intensity >= 0.0 && l.intensity <= 1e9)) r.fail(lat + "/intensity", "must be finite and >= 0");
+  if (!(l.range >= 0.0 && l.range <= 1e9)) r.fail(lat + "/range", "must be positive");
+  const glm::vec3 intensity = color * float(l.intensity) * kGltfLightUnit;
+  const glm::vec3 position = glm::vec3(world[3]), axis = -glm::vec3(world[2]);
+  if (!(glm::length(axis) > 0.0f)) r.fail(at, "its transform has no -z axis to aim the light");
+  const glm::vec3 direction = glm::normalize(axis);
+  const int line = 0;
+  if (l.type == "point") {
+    out.push_back({PointLight{.position = position, .intensity = intensity, .range = float(l.range)}, line});
+  } else if (l.type == "spot") {
+    const double inner = l.spot.innerConeAngle, outer = l.spot.outerConeAngle;
+    if (!(inner >= 0.0 && inner < outer && outer <= 1.5707963268))
+      r.fail(lat + "/spot", "needs 0 <= innerConeAngle < outerConeAngle <= pi/2");
+    out.push_back({SpotLight{.position = position, .direction = direction, .intensity = intensity, .inner = float(inner),
+                             .outer = float(outer), .range = float(l.range)},
+                   line});
+  } else if (l.type == "directional") {
+    out.push_back({DirectionalLight{.direction = direction, .intensity = intensity}, line});
+  } else {
+    r.fail(lat + "/type", "must be \"point\", \"spot\" or \"directional\"");
+  }
+}
+
 }  // namespace
 
 Resumable scene_parts(const tinygltf::Model& model, const Reader& r, Materials& materials, std::vector<GltfPart>& parts,
@@ -203,8 +250,10 @@ Resumable scene_parts(const tinygltf::Model& model, const Reader& r, Materials& 
       } else if (c.type != "orthographic") {
         r.fail(cat + "/type", "must be \"perspective\" or \"orthographic\"");
       }
+      g.lights = std::move(camera->lights);
       *camera = g;
     }
+    if (camera) node_light(model, r, n, world, at, camera->lights);
     for (int c : n.children) todo.push_back({c, world, at + "/children"});
   }
 }

@@ -88,6 +88,7 @@ std::pair<glm::vec3, glm::vec3> mesh_bounds(const Scene& scene) {
 }
 
 void set_gltf_camera(Scene& scene, const GltfCamera& g) {
+  scene.punctual.insert(scene.punctual.end(), g.lights.begin(), g.lights.end());
   if (g.node >= 0 && g.perspective) {
     scene.camera = camera_from_gltf(g);
     return;

@@ -1,8 +1,8 @@
 // A scene made from a glTF file alone (`pathtracer render model.glb`, the page's
 // ?scene=model.glb or a dropped file; docs/gltf.md): the file as one <Mesh src> brings
 // its meshes and materials exactly as in an XML scene, with the default environment
-// (kDefaultEnvMap), path mode, and the camera: the glTF's first camera node, else one
-// that frames the scene's bounds. SceneLoad (scene/xml_loader.h) reads it in slices like
+// (kDefaultEnvMap), path mode, the camera: the glTF's first camera node, else one
+// that frames the scene's bounds, and its KHR_lights_punctual lights. SceneLoad (scene/xml_loader.h) reads it in slices like
 // any scene: it loads the generated scene text, then set_gltf_camera.
 #pragma once
 #include <string>
@@ -43,7 +43,8 @@ Camera framing_camera(glm::vec3 lo, glm::vec3 hi, float fov_y = 45.0f);
 std::pair<glm::vec3, glm::vec3> mesh_bounds(const Scene& scene);
 
 // The scene's camera: `g` when it is a perspective camera node, else the framing camera
-// (an orthographic camera is warned about and replaced by it).
+// (an orthographic camera is warned about and replaced by it); and the glTF's punctual
+// lights (g.lights, KHR_lights_punctual) join the scene's.
 void set_gltf_camera(Scene& scene, const GltfCamera& g);
 
 // An error met while loading the generated scene, as the glTF file's own: the generated

@@ -12,6 +12,7 @@
 
 #include "core/image.h"
 #include "core/resumable.h"
+#include "lights/all.h"
 #include "scene/mesh.h"
 
 namespace pt {
@@ -64,6 +65,9 @@ struct GltfCamera {
   glm::mat4 transform{1.0f};  // the node's world transform (the camera looks down its -z, up +y)
   bool perspective = true;
   float yfov = 0.0f;          // radians, in (0, pi)
+  // Also for a scene of the file alone: the default scene's KHR_lights_punctual lights,
+  // placed and aimed by their nodes (gltf_nodes.cpp; docs/gltf.md for the units).
+  std::vector<PunctualLight> lights;
 };
 
 struct GltfPart {

@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "lights/all.h"
 #include "materials/all.h"
 #include "scene/kinds.h"
 #include "shapes/all.h"
@@ -131,6 +132,7 @@ struct Scene {
   SceneRender render;
   bool dot_weight = true;  // SceneLevel dotWeight: cosine-weighted (true) or uniform diffuse sampling
   std::vector<Light> lights;
+  std::vector<PunctualLight> punctual;  // point, spot and directional lights (lights/kinds.h)
   std::vector<Shape> shapes;
   std::vector<Material> materials;
   // Mesh geometry, shared by instances (a scene copy shares it too: it is never edited).
@@ -154,6 +156,15 @@ inline void sync_light(Scene& scene, int i) {
 inline bool is_sampled_light(const Scene& scene, const Shape& s) {
   const Material& m = scene.materials[size_t(s.material)];
   return info(s.kind()).samplable && (m.emission.x > 0.0f || m.emission.y > 0.0f || m.emission.z > 0.0f);
+}
+
+// The shapes next-event estimation samples as lights, in shape order: each
+// is_sampled_light shape (the shader generator and the packer both use this list).
+inline std::vector<int> sampled_light_shapes(const Scene& scene) {
+  std::vector<int> out;
+  for (size_t i = 0; i < scene.shapes.size(); ++i)
+    if (is_sampled_light(scene, scene.shapes[i])) out.push_back(int(i));
+  return out;
 }
 
 }  // namespace pt

@@ -236,6 +236,11 @@ void Loader::root(const XMLElement* r) {
       camera(e);
     } else if (!std::strcmp(n, "Light")) {
       light(e);
+    } else if (XmlAttrs la(e, file); std::optional<LightParams> l = parse_light_element(n, la)) {
+      // <PointLight>, <SpotLight>, <DirectionalLight> (lights/kinds.h: the kind's stem parses it)
+      la.finish();
+      if (e->FirstChildElement()) la.fail("takes no child elements");
+      scene.punctual.push_back({*l, e->GetLineNum()});
     } else if (!std::strcmp(n, "Environment")) {
       if (have_env) fail(e, "a second <Environment>");
       have_env = true;

@@ -28,8 +28,8 @@ Features Features::of(const Scene& scene) {
   // kinds whose functions its own call (a texture shades as Diffuse).
   for (const Material& m : scene.materials) f.materials |= kind_bit(m.kind()) | kMaterialTraits[int(m.kind())].needs;
   for (const Material& m : scene.materials) f.material_features |= pt::material_features(m.params);
-  for (const Shape& s : scene.shapes)
-    if (is_sampled_light(scene, s)) f.lights |= 1u << int(s.kind());
+  for (int i : sampled_light_shapes(scene)) f.lights |= 1u << int(scene.shapes[size_t(i)].kind());
+  for (const PunctualLight& l : scene.punctual) f.punctual |= 1u << int(l.kind());
   return f;
 }
 
@@ -138,6 +138,19 @@ ShaderSource resolve_includes(const std::string& root_text, const std::string& r
   Resolver r;
   r.file(root_name, root_text, "");
   return std::move(r.out);
+}
+
+// The punctual light kinds present (lights/kinds.h): their snippets and
+// punctual_sample(l, p, wi, dist, e), dispatching on the light record's shape = -1 - kind.
+static std::string punctual_dispatch(const Features& f) {
+  if (!f.punctual) return "";
+  std::string g = "#define HAS_PUNCTUAL 1\n", d = "bool punctual_sample(LightRec l, vec3 p, out vec3 wi, out float dist, out vec3 e) {\n";
+  for (int i = 0; i < kNumLightKinds; ++i) {
+    if (!f.has(LightKind(i))) continue;
+    g += "#include \"lights/" + std::string(kLightKinds[i].glsl) + ".glsl\"\n";
+    d += "  if (l.shape == " + std::to_string(-1 - i) + ") return punctual_" + kLightKinds[i].glsl + "(l, p, wi, dist, e);\n";
+  }
+  return g + d + "  wi = vec3(0.0);\n  dist = 0.0;\n  e = vec3(0.0);\n  return false;\n}\n";
 }
 
 std::string generate_prelude(const Features& features) {
@@ -266,6 +279,7 @@ std::string generate_prelude(const Features& features) {
   }
   g += lsmp + "  pdf = 0.0;\n  dist = 0.0;\n  return false;\n}\n" + lpdf + "  return 0.0;\n}\n";
   if (f.env_map) g += "#include \"environment.glsl\"\n";
+  g += punctual_dispatch(f);
   g += "#include \"lights.glsl\"\n";
   return g;
 }

@@ -17,6 +17,7 @@ struct Features {
   uint32_t shapes = 0;     // bit i: ShapeKind i is present
   uint32_t materials = 0;  // bit i: MaterialKind i is present
   uint32_t lights = 0;     // bit i: an emitter of ShapeKind i is light-sampled
+  uint32_t punctual = 0;   // bit i: a punctual light of LightKind i (lights/kinds.h)
   uint32_t material_features = 0;  // bit i: MaterialFeature i is used (materials/features.h)
   bool env_map = false;    // an HDR environment map (importance-sampled)
   bool motion = false;     // a sphere moves (velocity): intersection depends on time
@@ -28,6 +29,7 @@ struct Features {
   bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
   bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
   bool has_light(ShapeKind k) const { return lights >> int(k) & 1u; }
+  bool has(LightKind k) const { return punctual >> int(k) & 1u; }
   bool has(MaterialFeature m) const { return material_features >> int(m) & 1u; }
   // A kind present reads the scene's image maps (the texture array, surface uv).
   bool image_maps() const {
@@ -36,13 +38,13 @@ struct Features {
     return false;
   }
   uint64_t key() const {
-    return uint64_t(shapes) | uint64_t(compute) << 15 | uint64_t(lights) << 16 | uint64_t(materials) << 32 |
+    return uint64_t(shapes) | uint64_t(compute) << 15 | uint64_t(lights | punctual << 10) << 16 | uint64_t(materials) << 32 |
            uint64_t(motion) << 62 | uint64_t(env_map) << 63 | uint64_t(mode) << 56 |  // materials use bits 32..51
            uint64_t(material_features) << 52;
   }
   static Features of(const Scene& scene);
 };
-static_assert(kNumShapeKinds <= 15 && kNumMaterialKinds <= 20 && kNumMaterialFeatures <= 4 && kNumRenderModes <= 64, "Features::key bits");
+static_assert(kNumShapeKinds <= 10 && kNumLightKinds <= 6 && kNumMaterialKinds <= 20 && kNumMaterialFeatures <= 4 && kNumRenderModes <= 64, "Features::key bits");
 
 class ShaderGenError : public std::runtime_error {
  public:

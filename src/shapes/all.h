@@ -108,6 +108,33 @@ inline glm::vec3 position(const ShapeParams& p) {
 inline void move(ShapeParams& p, glm::vec3 d) {
   visit_shape(p, [&](auto& k) { k.move(d); });
 }
+// An emitter's surface area, for light selection by power (render/light_select.h): the
+// samplable kinds give theirs, the others 0.
+inline float area(const ShapeParams& p) {
+  return std::visit([](const auto& k) -> float {
+    if constexpr (requires { k.area(); }) return k.area();
+    else return 0.0f;
+  }, p);
+}
+// Light sealing (render/light_select.h): whether shape p is a closed solid whose inside is
+// the box [lo, hi] (the kinds that define solid()), and whether all of shape p but a set
+// of zero area lies strictly inside the box [lo, hi] (a kind's inside_box, else its
+// bounds strictly inside).
+inline bool solid(const ShapeParams& p, glm::vec3& lo, glm::vec3& hi) {
+  return std::visit([&](const auto& k) -> bool {
+    if constexpr (requires { k.solid(lo, hi); }) return k.solid(lo, hi);
+    else return false;
+  }, p);
+}
+inline bool inside_box(const ShapeParams& p, glm::vec3 lo, glm::vec3 hi, const ShapeContext& ctx) {
+  return std::visit([&](const auto& k) -> bool {
+    if constexpr (requires { k.inside_box(lo, hi, ctx.motion_bound); }) return k.inside_box(lo, hi, ctx.motion_bound);
+    else {
+      const ShapeBounds b = k.bounds(ctx);
+      return glm::all(glm::greaterThan(b.lo, lo)) && glm::all(glm::lessThan(b.hi, hi));
+    }
+  }, p);
+}
 // A moving kind's velocity (motion blur), zero for the others.
 inline glm::vec3 velocity(const ShapeParams& p) {
   return visit_shape(p, [](const auto& k) {

@@ -49,6 +49,16 @@ struct Box {
   template <class Q>
   void intersect(const Q& q, int id, Hit& h) const { intersect_box(*this, id, q.r, q.box, h); }
   glm::vec3 position() const { return 0.5f * (min + max); }
+  // Light sealing (render/light_select.h): a box is a closed solid; with an absorbing
+  // material nothing from outside reaches its inside [lo, hi].
+  bool solid(glm::vec3& lo, glm::vec3& hi) const {
+    lo = min, hi = max;
+    return true;
+  }
+  float area() const {  // light selection by power
+    const glm::vec3 e = max - min;
+    return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
+  }
   void move(glm::vec3 d) { min += d, max += d; }
   template <class E>
   bool edit(E&) { return false; }

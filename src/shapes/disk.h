@@ -41,6 +41,7 @@ struct Disk {
     w.set(rec::radius, radius);
     w.set(rec::normal, normal);
   }
+  float area() const { return 3.14159265f * radius * radius; }  // light selection by power
   ShapeBounds bounds(const ShapeContext&) const {
     const glm::vec3 e = radius * glm::sqrt(glm::max(glm::vec3(1.0f) - normal * normal, glm::vec3(0.0f)));
     return {center - e, center + e};

@@ -48,6 +48,15 @@ struct Sphere {
   template <class Q>
   void intersect(const Q& q, int id, Hit& h) const { intersect_sphere(*this, id, q.r, h); }
   glm::vec3 position() const { return center; }
+  float area() const { return 4.0f * 3.14159265f * radius * radius; }  // light selection by power
+  // Light sealing (render/light_select.h): all of the sphere but a set of zero area lies
+  // strictly inside the box [lo, hi] over the shutter's times (inside a box, a sphere
+  // meets a face's plane in one point at most, so touching the faces is allowed).
+  bool inside_box(glm::vec3 lo, glm::vec3 hi, float motion_bound) const {
+    for (const glm::vec3 c : {center, center + velocity * motion_bound})
+      if (glm::any(glm::lessThan(c - radius, lo)) || glm::any(glm::greaterThan(c + radius, hi))) return false;
+    return true;
+  }
   void move(glm::vec3 d) { center += d; }
   template <class E>
   bool edit(E& e) { return edit_radius(e, radius); }

@@ -72,6 +72,7 @@ struct Triangle {
   }
   // Its primitive in the BVH (BvhRole::Triangles): the vertices, inline.
   void vertices(glm::vec3 v[3]) const { v[0] = v0, v[1] = v1, v[2] = v2; }
+  float area() const { return 0.5f * glm::length(glm::cross(v1 - v0, v2 - v0)); }  // light selection by power
   ShapeBounds bounds(const ShapeContext&) const {
     ShapeBounds b;
     for (const glm::vec3& q : {v0, v1, v2}) b.grow(q);
