@@ -18,7 +18,7 @@ struct PackedScene {
   RecordBuffer vertices{vertex_rec::kTexels};
   int unbounded = 0;  // prims [0, unbounded) lie outside the BVH (planes): every ray tests them
   int bvh_depth = 0;
-  float motion_bound = 0.0f;  // moving spheres are bounded over times [0, motion_bound]
+  float motion_bound = 0.0f;  // moving shapes are bounded over times [0, motion_bound]
   double bvh_build_ms = 0.0;
   // Who is whose, as integers from the packing itself (never read back from the float
   // records): each light record's shape (Renderer::update_values compares them); for
