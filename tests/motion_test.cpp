@@ -136,8 +136,11 @@ TEST_CASE("motion: packed moving triangles and mesh instances are marked and bou
                                 repo_path("scenes") + "/x.xml");
   PackedScene p = pack_scene(scene);
   CHECK(p.motion_bound == 1.25f);
-  // Each node's box holds the box of every primitive below it (checked through the leaves'
-  // ancestors), for a moving primitive its box at time 0 and at motion_bound.
+  // At times 0, motion_bound / 2 and motion_bound, each node's box (a node marked with a
+  // moving shape: moved with it) holds every primitive below it where it is then (checked
+  // through the leaves' ancestors).
+  int marked = 0;
+  for (int n = 0; n < p.nodes.count(); ++n) marked += node_mover(p.node_count[size_t(n)]) >= 0;
   auto check_prim = [&](int q) {
     const Shape& s = scene.shapes[size_t(p.prim_shape[size_t(q)])];
     const glm::vec3 v = velocity(s.params);
@@ -150,10 +153,17 @@ TEST_CASE("motion: packed moving triangles and mesh instances are marked and bou
       const ShapeBounds b = bounds(s.params, ShapeContext{&scene.meshes, 0.0f});
       pts = {b.lo, b.hi};
     }
-    for (size_t i = 0, n = pts.size(); i < n; ++i) pts.push_back(pts[i] + v * p.motion_bound);
-    for (int n = p.prim_leaf[size_t(q)]; n >= 0; n = p.node_parent[size_t(n)])
-      for (const glm::vec3& x : pts) CHECK(within(x, p.nodes.get3(n, node_rec::lo), p.nodes.get3(n, node_rec::hi), 0.0f));
+    for (const float t : {0.0f, 0.5f * p.motion_bound, p.motion_bound})
+      for (int n = p.prim_leaf[size_t(q)]; n >= 0; n = p.node_parent[size_t(n)]) {
+        const int m = node_mover(p.node_count[size_t(n)]);
+        const glm::vec3 moved = m >= 0 ? velocity(scene.shapes[size_t(m)].params) * t : glm::vec3(0.0f);
+        if (m >= 0) CHECK(m == p.prim_shape[size_t(q)]);
+        for (const glm::vec3& x : pts)
+          CHECK(within(x + v * t, p.nodes.get3(n, node_rec::lo) + moved, p.nodes.get3(n, node_rec::hi) + moved, 1e-5f * (1.0f + glm::length(x))));
+      }
   };
+  // The moving mesh's 320 triangles lie under nodes marked with it: most of its hierarchy.
+  CHECK(marked > 300);
   for (int q = p.unbounded; q < p.prims.count(); ++q) check_prim(q);
   // An analytic primitive's copy of its record carries the velocity (the box: q6..q8).
   const int box = p.shape_prim[4];

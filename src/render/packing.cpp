@@ -126,6 +126,7 @@ PackJob::PackJob(const Scene& scene) : scene_(scene), vertex_base_(scene.shapes.
   // Allocated once: growing them by doubling copied tens of MB in one slice.
   refs_.reserve(prims);
   boxes_.reserve(prims);
+  init_motion(prims);  // packing_motion.cpp
 }
 
 const char* PackJob::stage() const {
@@ -176,6 +177,7 @@ bool PackJob::run(long work) {
         if (!built) break;
         bvh_ = builder_->take();
         builder_.reset();
+        if (!velocity_.empty()) node_mover_ = sweep_bvh(bvh_, boxes_, mover_, velocity_, p_.motion_bound);
         p_.bvh_depth = bvh_.depth;
         p_.prims.reserve(p_.unbounded + int(refs_.size()));
         p_.prim_leaf.assign(size_t(p_.unbounded) + refs_.size(), -1);
@@ -223,7 +225,7 @@ void PackJob::boxes_step(long& work) {
         }
         case BvhRole::Analytic: {
           refs_.push_back({i, -1});
-          boxes_.push_back(analytic_box(s, p_.motion_bound));
+          add_box(i, analytic_box(s, 0.0f), analytic_box(s, p_.motion_bound));
           break;
         }
         case BvhRole::Triangles: {  // a lone Triangle
@@ -231,7 +233,7 @@ void PackJob::boxes_step(long& work) {
           triangle_vertices(s, v);
           if (degenerate(v)) break;
           refs_.push_back({i, 0});
-          boxes_.push_back(triangle_box(v, velocity(s.params), p_.motion_bound));
+          add_box(i, triangle_box(v, velocity(s.params), 0.0f), triangle_box(v, velocity(s.params), p_.motion_bound));
           break;
         }
         case BvhRole::Instanced:  // handled below
@@ -292,7 +294,7 @@ void PackJob::boxes_step(long& work) {
       const glm::vec3 v[3] = {w[tri.x], w[tri.y], w[tri.z]};
       if (degenerate(v)) continue;
       refs_.push_back({i, int(at_)});
-      boxes_.push_back(triangle_box(v, s.as<Mesh>()->velocity, p_.motion_bound));  // the instance's motion
+      add_box(i, triangle_box(v, glm::vec3(0.0f), 0.0f), triangle_box(v, s.as<Mesh>()->velocity, p_.motion_bound));
     }
     if (at_ < m.triangles.size()) return;
   }
@@ -329,12 +331,13 @@ void PackJob::nodes_step(long& work) {
     const BvhNode& n = bvh_.nodes[at_];
     const int k = p_.nodes.add();
     const int first = n.count > 0 ? n.first + p_.unbounded : n.first;
+    const int count = n.count + (node_mover_.empty() ? 0 : 32 * (node_mover_[at_] + 1));  // packing.h: node_mover
     p_.nodes.set(k, node_rec::lo, n.box.lo);
     p_.nodes.set(k, node_rec::hi, n.box.hi);
     p_.nodes.set(k, node_rec::first, first);
-    p_.nodes.set(k, node_rec::count, n.count);
+    p_.nodes.set(k, node_rec::count, count);
     p_.node_first.push_back(first);
-    p_.node_count.push_back(n.count);
+    p_.node_count.push_back(count);
     if (n.count > 0)
       for (int q = first; q < first + n.count; ++q) p_.prim_leaf[size_t(q)] = k;
     else
@@ -361,27 +364,26 @@ bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>
   else write_analytic_prim(p, k, s, shape);
   prims.push_back(k);
   if (role == BvhRole::Unbounded) return true;  // planes are outside the BVH
-  // The leaf's box from its primitives, then each ancestor's from its two children.
-  auto prim_box = [&](int q) {
+  // The leaf's box from its primitives, then each ancestor's from its two children (a
+  // node marked with a moving shape: at time 0; any other: over the shutter, sweep_bvh).
+  auto prim_box = [&](int q, float until) {
     const Shape& of = scene.shapes[size_t(p.prim_shape[size_t(q)])];
-    if (info(of.kind()).bvh == BvhRole::Analytic) return analytic_box(of, p.motion_bound);
+    if (info(of.kind()).bvh == BvhRole::Analytic) return analytic_box(of, until);
     // A triangle primitive: its vertices as written, swept by its shape's motion.
     const glm::vec3 w[3] = {p.prims.get3(q, prim_rec::v0), p.prims.get3(q, prim_rec::v1), p.prims.get3(q, prim_rec::v2)};
-    return triangle_box(w, velocity(of.params), p.motion_bound);
+    return triangle_box(w, velocity(of.params), until);
   };
   for (int n = p.prim_leaf[size_t(k)]; n >= 0; n = p.node_parent[size_t(n)]) {
-    const int first = p.node_first[size_t(n)], count = p.node_count[size_t(n)];
+    const int first = p.node_first[size_t(n)], count = node_prims(p.node_count[size_t(n)]);
+    const int mover = node_mover(p.node_count[size_t(n)]);
     Aabb b;
     if (count > 0) {
-      for (int q = first; q < first + count; ++q) {
-        const Aabb c = prim_box(q);
-        b.grow(c.lo);
-        b.grow(c.hi);
-      }
+      for (int q = first; q < first + count; ++q) b.grow(prim_box(q, mover >= 0 ? 0.0f : p.motion_bound));
     } else {
       for (int c : {first, first + 1}) {
-        b.grow(p.nodes.get3(c, node_rec::lo));
-        b.grow(p.nodes.get3(c, node_rec::hi));
+        const Aabb cb{p.nodes.get3(c, node_rec::lo), p.nodes.get3(c, node_rec::hi)};
+        const int m = node_mover(p.node_count[size_t(c)]);
+        b.grow(m >= 0 && mover < 0 ? swept_box(cb, velocity(scene.shapes[size_t(m)].params), p.motion_bound) : cb);
       }
     }
     p.nodes.set(n, node_rec::lo, b.lo);
