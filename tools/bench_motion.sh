@@ -12,7 +12,7 @@
 #   for f in .gl/*.deb; do dpkg -x "$f" /; done; ldconfig;
 #   export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json;
 #   bash tools/bench_motion.sh 1920x1080 5 3 | tee $OUT/log-motion.txt
-# Prints one line per render (spp/s, Mrays/s, BVH nodes) and a summary per variant.
+# VARIANTS="mesh-still mesh-moving" picks some. Prints one line per render (spp/s, Mrays/s, BVH nodes) and a summary per variant.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 size="${1:-192x128}"
@@ -31,7 +31,7 @@ shutter < scenes/bench/million.xml |
   sed 's#</Objects>#<Sphere center="30 0 -30" radius="0.1" velocity="0.1 0 0"><Diffuse/></Sphere></Objects>#' > "$w/mesh-still-motion-code.xml"
 grep -q 'velocity="20 0 0"' "$w/box-moving.xml" && grep -q 'shutter="1"' "$w/box-moving.xml"
 grep -q 'velocity="0.2 0 0"' "$w/mesh-moving.xml" && grep -q 'shutter="1"' "$w/mesh-moving.xml"
-variants=(box-still box-moving mesh-still mesh-moving mesh-still-motion-code)
+read -r -a variants <<< "${VARIANTS:-box-still box-moving mesh-still mesh-moving mesh-still-motion-code}"
 "$bin" render "$w/box-still.xml" --size 64x64 --spp 1 --out "$w/warm.pfm" | grep '^GL:'
 for ((r = 1; r <= repeat; ++r)); do
   for v in "${variants[@]}"; do

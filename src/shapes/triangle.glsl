@@ -81,15 +81,14 @@ void intersect_triangle_moving(vec3 va, vec3 vb, vec3 vc, int order, int id, vec
 }
 #endif
 
-// A triangle primitive of the BVH (a lone Triangle or a mesh's): vertices and edge order inline.
+// A triangle primitive of the BVH (a lone Triangle or a mesh's): vertices and edge order
+// inline. With motion, one test for still and moving ones (a still one's offset is 0).
 void triangle_prim(PrimRec p, Ray r, TriangleRay tr, inout Hit h) {
 #ifdef HAS_MOTION
-  if (p.extra != 0.0) {
-    intersect_triangle_moving(p.v0, p.v1, p.v2, p.kind, p.tag, prim_offset(p), r, tr, h);
-    return;
-  }
-#endif
+  intersect_triangle_moving(p.v0, p.v1, p.v2, p.kind, p.tag, prim_offset(p), r, tr, h);
+#else
   intersect_triangle_verts(p.v0, p.v1, p.v2, p.kind, p.tag, r, tr, h);
+#endif
 }
 
 void intersect_triangle(ShapeRec s, int id, Ray r, TriangleRay tr, inout Hit h) {
