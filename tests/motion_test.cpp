@@ -1,9 +1,11 @@
 // Motion blur on every shape kind (issue 15): a translation by velocity * t over the
 // shutter (shapes/shape.h: parse_motion).
 //  - the loader: every kind takes `velocity` or `end` (its position at time 1), not both;
-//  - bounds: a moving kind's box (the BVH's) holds its hits at every time in
-//    [0, motion_bound] (CPU), and the packed BVH's leaves and their ancestors hold the
-//    swept boxes of moving triangles and mesh instances, whose primitives are marked;
+//  - bounds: a moving kind's box holds its hits at every time in [0, motion_bound]
+//    (CPU); in the packed BVH, each primitive is inside its leaf's and every ancestor's
+//    box at times 0, motion_bound / 2 and motion_bound (a node marked with a moving shape
+//    moving with it: render/packing_motion.cpp), a moving mesh's hierarchy is marked,
+//    moving triangle primitives are marked, and a refit keeps all of it;
 //  - intersection: the GLSL (scene_intersect at time g_time, through the BVH) against the
 //    CPU twin of the shape moved to that time, for every kind;
 // The renders (tests/motion_render_test.cpp): moving box, disk and triangle lights
