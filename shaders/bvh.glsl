@@ -24,7 +24,16 @@ float bvh_box_entry(vec3 lo, vec3 hi, vec3 o, vec3 inv, float tmax) {
 
 // A stack entry: an interior node as the index of its first child (>= 0), a leaf as
 // -1 - (first primitive * 16 + count - 1) (leaves hold 1..16 primitives).
+#ifdef HAS_MOTION
+// With motion blur, count's bits 5 and up mark a node whose primitives all belong to one
+// moving shape (render/packing.h, node_mover): its box is at time 0, so the ray is moved
+// by -velocity * g_time for its test, as the primitives' tests move it.
+int bvh_entry(NodeRec n) { int c = n.count & 31; return c == 0 ? n.first : -1 - (n.first * 16 + c - 1); }
+vec3 bvh_node_origin(NodeRec n, vec3 o) { return n.count >= 32 ? o - prim_velocity((n.count >> 5) - 1) * g_time : o; }
+#else
 int bvh_entry(NodeRec n) { return n.count == 0 ? n.first : -1 - (n.first * 16 + n.count - 1); }
+#define bvh_node_origin(n, o) (o)
+#endif
 
 void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
   PrimRec p = load_prim(i);
@@ -77,7 +86,7 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
   if ((any_hit && h.id >= 0) || u_num_nodes == 0) return h;
   vec3 inv = 1.0 / mix(r.d, vec3(1e-30), equal(r.d, vec3(0.0)));
   NodeRec root = load_node(0);
-  if (bvh_box_entry(root.lo, root.hi, r.o, inv, h.t) == T_INF) return h;
+  if (bvh_box_entry(root.lo, root.hi, bvh_node_origin(root, r.o), inv, h.t) == T_INF) return h;
   BVH_STACK_DECL
   int sp = 0;
   int cur = bvh_entry(root);
@@ -85,8 +94,8 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
     if (cur >= 0) {
       NodeRec a = load_node(cur);
       NodeRec b = load_node(cur + 1);
-      float ta = bvh_box_entry(a.lo, a.hi, r.o, inv, h.t);
-      float tb = bvh_box_entry(b.lo, b.hi, r.o, inv, h.t);
+      float ta = bvh_box_entry(a.lo, a.hi, bvh_node_origin(a, r.o), inv, h.t);
+      float tb = bvh_box_entry(b.lo, b.hi, bvh_node_origin(b, r.o), inv, h.t);
       // (Entries, not records, in the selections: WebGL has no ?: on structures.)
       int ea = bvh_entry(a), eb = bvh_entry(b);
       if (ta < T_INF && tb < T_INF) {

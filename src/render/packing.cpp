@@ -55,7 +55,7 @@ void write_analytic_prim(PackedScene& p, int k, const Shape& s, int shape) {
 
 void pack_analytic_prim(PackedScene& p, const Shape& s, int shape) { write_analytic_prim(p, p.prims.add(), s, shape); }
 
-// The box the BVH holds for an analytic shape: its kind's bounds (a moving sphere's over
+// The box the BVH holds for an analytic shape: its kind's bounds (a moving one's over
 // the motion's times), padded.
 Aabb analytic_box(const Shape& s, float motion_bound) {
   const ShapeBounds k = bounds(s.params, ShapeContext{nullptr, motion_bound});
@@ -68,8 +68,10 @@ Aabb analytic_box(const Shape& s, float motion_bound) {
 // A lone triangle's vertices (a Mesh's come from its mesh).
 void triangle_vertices(const Shape& s, glm::vec3 v[3]) { shape_vertices(s.params, v); }
 
-void write_triangle_prim(PackedScene& p, int k, int tag, const glm::vec3 v[3], glm::vec3 attr) {
+// `moving`: its shape has a velocity (motion blur; triangle.glsl: prim_offset).
+void write_triangle_prim(PackedScene& p, int k, int tag, const glm::vec3 v[3], glm::vec3 attr, bool moving) {
   p.prims.set(k, prim_rec::tag, tag);
+  if (moving) p.prims.set(k, prim_rec::extra, 1.0f);
   p.prims.set(k, prim_rec::kind, triangle_edge_order(v[0], v[1], v[2]));
   p.prims.set(k, prim_rec::v0, v[0]);
   p.prims.set(k, prim_rec::v1, v[1]);
@@ -78,6 +80,15 @@ void write_triangle_prim(PackedScene& p, int k, int tag, const glm::vec3 v[3], g
 }
 
 bool degenerate(const glm::vec3 v[3]) { return !(glm::length(glm::cross(v[1] - v[0], v[2] - v[0])) > 0.0f); }
+
+// A triangle primitive's box, padded; a moving one's: the union of its boxes at times 0
+// and motion_bound (what a translation sweeps, exactly).
+Aabb triangle_box(const glm::vec3 v[3], glm::vec3 velocity, float motion_bound) {
+  Aabb b;
+  for (int i = 0; i < 6; ++i)
+    if (i < 3 || velocity != glm::vec3(0.0f)) b.grow(i < 3 ? v[i] : v[i - 3] + velocity * motion_bound);
+  return b.padded();
+}
 
 }  // namespace
 
@@ -114,6 +125,7 @@ PackJob::PackJob(const Scene& scene) : scene_(scene), vertex_base_(scene.shapes.
   // Allocated once: growing them by doubling copied tens of MB in one slice.
   refs_.reserve(prims);
   boxes_.reserve(prims);
+  init_motion(prims);  // packing_motion.cpp
 }
 
 const char* PackJob::stage() const {
@@ -164,6 +176,7 @@ bool PackJob::run(long work) {
         if (!built) break;
         bvh_ = builder_->take();
         builder_.reset();
+        if (!velocity_.empty()) node_mover_ = sweep_bvh(bvh_, boxes_, mover_, velocity_, p_.motion_bound);
         p_.bvh_depth = bvh_.depth;
         p_.prims.reserve(p_.unbounded + int(refs_.size()));
         p_.prim_leaf.assign(size_t(p_.unbounded) + refs_.size(), -1);
@@ -211,17 +224,15 @@ void PackJob::boxes_step(long& work) {
         }
         case BvhRole::Analytic: {
           refs_.push_back({i, -1});
-          boxes_.push_back(analytic_box(s, p_.motion_bound));
+          add_box(i, analytic_box(s, 0.0f), analytic_box(s, p_.motion_bound));
           break;
         }
         case BvhRole::Triangles: {  // a lone Triangle
           glm::vec3 v[3];
           triangle_vertices(s, v);
           if (degenerate(v)) break;
-          Aabb b;
-          for (const glm::vec3& q : v) b.grow(q);
           refs_.push_back({i, 0});
-          boxes_.push_back(b.padded());
+          add_box(i, triangle_box(v, velocity(s.params), 0.0f), triangle_box(v, velocity(s.params), p_.motion_bound));
           break;
         }
         case BvhRole::Instanced:  // handled below
@@ -281,10 +292,8 @@ void PackJob::boxes_step(long& work) {
       const glm::uvec3 tri = m.triangles[at_];
       const glm::vec3 v[3] = {w[tri.x], w[tri.y], w[tri.z]};
       if (degenerate(v)) continue;
-      Aabb b;
-      for (const glm::vec3& q : v) b.grow(q);
       refs_.push_back({i, int(at_)});
-      boxes_.push_back(b.padded());
+      add_box(i, triangle_box(v, glm::vec3(0.0f), 0.0f), triangle_box(v, s.as<Mesh>()->velocity, p_.motion_bound));
     }
     if (at_ < m.triangles.size()) return;
   }
@@ -312,7 +321,7 @@ void PackJob::prims_step(long& work) {
       v[2] = w[tri.z];
       if (vertex_base_[size_t(ref.shape)] >= 0) attr = glm::vec3(tri) + float(vertex_base_[size_t(ref.shape)]);
     }
-    write_triangle_prim(p_, k, ref.shape, v, attr);
+    write_triangle_prim(p_, k, ref.shape, v, attr, velocity(s.params) != glm::vec3(0.0f));
   }
 }
 
@@ -321,12 +330,13 @@ void PackJob::nodes_step(long& work) {
     const BvhNode& n = bvh_.nodes[at_];
     const int k = p_.nodes.add();
     const int first = n.count > 0 ? n.first + p_.unbounded : n.first;
+    const int count = n.count + (node_mover_.empty() ? 0 : 32 * (node_mover_[at_] + 1));  // packing.h: node_mover
     p_.nodes.set(k, node_rec::lo, n.box.lo);
     p_.nodes.set(k, node_rec::hi, n.box.hi);
     p_.nodes.set(k, node_rec::first, first);
-    p_.nodes.set(k, node_rec::count, n.count);
+    p_.nodes.set(k, node_rec::count, count);
     p_.node_first.push_back(first);
-    p_.node_count.push_back(n.count);
+    p_.node_count.push_back(count);
     if (n.count > 0)
       for (int q = first; q < first + n.count; ++q) p_.prim_leaf[size_t(q)] = k;
     else
@@ -349,31 +359,30 @@ bool refit_shape(const Scene& scene, PackedScene& p, int shape, std::vector<int>
   triangle_vertices(s, v);
   if (role == BvhRole::Triangles && (k < 0) != degenerate(v)) return false;  // it enters or leaves the BVH
   if (k < 0) return true;  // a degenerate triangle that stays one: nothing to draw
-  if (role == BvhRole::Triangles) write_triangle_prim(p, k, shape, v, glm::vec3(-1.0f));
+  if (role == BvhRole::Triangles) write_triangle_prim(p, k, shape, v, glm::vec3(-1.0f), velocity(s.params) != glm::vec3(0.0f));
   else write_analytic_prim(p, k, s, shape);
   prims.push_back(k);
   if (role == BvhRole::Unbounded) return true;  // planes are outside the BVH
-  // The leaf's box from its primitives, then each ancestor's from its two children.
-  auto prim_box = [&](int q) {
+  // The leaf's box from its primitives, then each ancestor's from its two children (a
+  // node marked with a moving shape: at time 0; any other: over the shutter, sweep_bvh).
+  auto prim_box = [&](int q, float until) {
     const Shape& of = scene.shapes[size_t(p.prim_shape[size_t(q)])];
-    if (info(of.kind()).bvh == BvhRole::Analytic) return analytic_box(of, p.motion_bound);
-    Aabb b;  // a triangle primitive: its vertices as written
-    for (const Field* f : {&prim_rec::v0, &prim_rec::v1, &prim_rec::v2}) b.grow(p.prims.get3(q, *f));
-    return b.padded();
+    if (info(of.kind()).bvh == BvhRole::Analytic) return analytic_box(of, until);
+    // A triangle primitive: its vertices as written, swept by its shape's motion.
+    const glm::vec3 w[3] = {p.prims.get3(q, prim_rec::v0), p.prims.get3(q, prim_rec::v1), p.prims.get3(q, prim_rec::v2)};
+    return triangle_box(w, velocity(of.params), until);
   };
   for (int n = p.prim_leaf[size_t(k)]; n >= 0; n = p.node_parent[size_t(n)]) {
-    const int first = p.node_first[size_t(n)], count = p.node_count[size_t(n)];
+    const int first = p.node_first[size_t(n)], count = node_prims(p.node_count[size_t(n)]);
+    const int mover = node_mover(p.node_count[size_t(n)]);
     Aabb b;
     if (count > 0) {
-      for (int q = first; q < first + count; ++q) {
-        const Aabb c = prim_box(q);
-        b.grow(c.lo);
-        b.grow(c.hi);
-      }
+      for (int q = first; q < first + count; ++q) b.grow(prim_box(q, mover >= 0 ? 0.0f : p.motion_bound));
     } else {
       for (int c : {first, first + 1}) {
-        b.grow(p.nodes.get3(c, node_rec::lo));
-        b.grow(p.nodes.get3(c, node_rec::hi));
+        const Aabb cb{p.nodes.get3(c, node_rec::lo), p.nodes.get3(c, node_rec::hi)};
+        const int m = node_mover(p.node_count[size_t(c)]);
+        b.grow(m >= 0 && mover < 0 ? swept_box(cb, velocity(scene.shapes[size_t(m)].params), p.motion_bound) : cb);
       }
     }
     p.nodes.set(n, node_rec::lo, b.lo);

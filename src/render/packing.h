@@ -18,12 +18,12 @@ struct PackedScene {
   RecordBuffer vertices{vertex_rec::kTexels};
   int unbounded = 0;  // prims [0, unbounded) lie outside the BVH (planes): every ray tests them
   int bvh_depth = 0;
-  float motion_bound = 0.0f;  // moving spheres are bounded over times [0, motion_bound]
+  float motion_bound = 0.0f;  // moving shapes are bounded over times [0, motion_bound]
   double bvh_build_ms = 0.0;
   // Who is whose, as integers from the packing itself (never read back from the float
   // records): each light record's shape (Renderer::update_values compares them); for
   // refit_shape, each BVH node's parent (-1: the root), first child or primitive and
-  // primitive count (0: interior), each primitive's leaf (-1: unbounded) and shape, and
+  // count (node_prims: 0 for an interior node; node_mover), each primitive's leaf (-1: unbounded) and shape, and
   // each analytic shape's or lone triangle's primitive (-1: none). A PackedScene of
   // pack_values has none of them.
   std::vector<int> light_shape;
@@ -32,6 +32,22 @@ struct PackedScene {
   std::vector<glm::vec3> seal_lo, seal_hi;
   std::vector<int> node_parent, node_first, node_count, prim_leaf, prim_shape, shape_prim;
 };
+
+// A BVH node record's count (and PackedScene::node_count): the leaf's primitive count in
+// bits 0..4 (0: interior) and, for a node whose primitives all belong to one moving shape
+// m (motion blur), m + 1 from bit 5 up: its box is at time 0 and moves with m (bvh.glsl;
+// render/packing_motion.cpp). 0 above bit 4 in a scene without motion.
+inline int node_prims(int count) { return count & 31; }
+inline int node_mover(int count) { return (count >> 5) - 1; }
+inline constexpr int kMaxMover = (1 << 19) - 2;  // the largest m whose count stays exact in a float
+
+// Motion blur: for a BVH built over boxes at time 0 of the primitives of moving shapes
+// (mover[prim] = its shape; -1: still, its box holding it at every time), the shape whose
+// velocity moves each node's box (-1: none), with the boxes of the other nodes grown to
+// hold their primitives over [0, motion_bound] (render/packing_motion.cpp).
+std::vector<int> sweep_bvh(Bvh& bvh, const std::vector<Aabb>& boxes, const std::vector<int>& mover,
+                           const std::vector<glm::vec3>& velocity, float motion_bound);
+Aabb swept_box(const Aabb& b, glm::vec3 velocity, float motion_bound);  // b and b + velocity * motion_bound
 
 // The traversal's stack holds at most depth - 1 entries: hierarchies deeper than this are
 // rebuilt with median splits below that depth (see build_bvh's max_depth).
@@ -101,6 +117,12 @@ class PackJob {
   long box_work_ = 0, box_done_ = 0;
   std::unique_ptr<BvhBuilder> builder_;
   Bvh bvh_;
+  // Motion blur (only for a scene with a moving bounded shape): each shape's velocity,
+  // each BVH input box's moving shape (-1: none; see sweep_bvh) and each node's.
+  std::vector<glm::vec3> velocity_;
+  std::vector<int> mover_, node_mover_;
+  void init_motion(size_t prims);
+  void add_box(int shape, const Aabb& at0, const Aabb& all_times);
 };
 
 // World-space vertices of a mesh instance's triangle.

@@ -43,8 +43,8 @@ void check_tables(const Scene& scene, const PackedScene& p) {
     const int first = int(p.nodes.get(n, node_rec::first)), count = int(p.nodes.get(n, node_rec::count));
     firsts.push_back(first);
     counts.push_back(count);
-    if (count > 0)
-      for (int q = first; q < first + count; ++q) leaf[size_t(q)] = n;
+    if (node_prims(count) > 0)  // (a moving shape's node carries it above bit 4: packing.h)
+      for (int q = first; q < first + node_prims(count); ++q) leaf[size_t(q)] = n;
     else
       parent[size_t(first)] = parent[size_t(first) + 1] = n;
   }

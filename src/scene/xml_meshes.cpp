@@ -147,6 +147,7 @@ void Loader::mesh(const XMLElement* e) {
   const glm::vec3 rotation = a.vec3("rotation", glm::vec3(0.0f));
   const float scale = a.number("scale", 1.0f);
   if (!(scale > 0.0f)) a.fail("'scale' must be positive");
+  const glm::vec3 velocity = parse_motion(a, position);  // motion blur: the instance's translation
   a.finish();
   const bool gltf = has_extension(source.src, ".gltf") || has_extension(source.src, ".glb");
   const XMLElement* m = e->FirstChildElement();
@@ -180,7 +181,7 @@ void Loader::mesh(const XMLElement* e) {
     if (!corners_within)
       for (const glm::vec3& v : part.mesh->positions)
         if (!within(v)) a.fail("scaled and moved, the mesh has a vertex beyond 1e9");
-    Shape s(Mesh{.mesh = mesh_index(part.mesh), .transform = place * part.transform});
+    Shape s(Mesh{.mesh = mesh_index(part.mesh), .transform = place * part.transform, .velocity = velocity});
     s.material = shared_material >= 0 ? shared_material : gltf_material(part.material, a);
     s.line = e->GetLineNum();
     scene.shapes.push_back(s);

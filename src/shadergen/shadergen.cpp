@@ -199,6 +199,16 @@ std::string generate_prelude(const Features& features) {
     if (f.has(ShapeKind(i)))
       g += kind_record(capitalized(kShapeKinds[i].glsl), kShapeKinds[i].glsl, kShapeTraits[i].fields, kShapeTraits[i].num_fields,
                        "ShapeRec", "q");
+  if (f.motion) {  // a moving shape's velocity (a triangle primitive's: triangle.glsl; a BVH node's: bvh.glsl)
+    g += "vec3 prim_velocity(int shape) {\n  ShapeRec s = load_shape(shape);\n";
+    for (int i = 0; i < kNumShapeKinds; ++i) {
+      if (!f.has(ShapeKind(i))) continue;
+      for (int k = 0; k < kShapeTraits[i].num_fields; ++k)
+        if (!std::strcmp(kShapeTraits[i].fields[k].name, "velocity"))
+          g += "  if (s.kind == SHAPE_" + upper(kShapeKinds[i].glsl) + ") return " + kShapeKinds[i].glsl + "_rec(s).velocity;\n";
+    }
+    g += "  return vec3(0.0);\n}\n";
+  }
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i))) g += "#include \"shapes/" + std::string(kShapeKinds[i].glsl) + ".glsl\"\n";
   for (int i = 0; i < kNumMaterialKinds; ++i)

@@ -20,7 +20,7 @@ struct Features {
   uint32_t punctual = 0;   // bit i: a punctual light of LightKind i (lights/kinds.h)
   uint32_t material_features = 0;  // bit i: MaterialFeature i is used (materials/features.h)
   bool env_map = false;    // an HDR environment map (importance-sampled)
-  bool motion = false;     // a sphere moves (velocity): intersection depends on time
+  bool motion = false;     // a shape moves (velocity): intersection depends on time
   RenderMode mode = RenderMode::PathTracer;  // a render setting, not the scene's: the renderer sets it
   // A GLSL ES 3.10 compute kernel instead of the WebGL 2 fragment pass (native GL ES 3.1+
   // only; the same code, run on every core: some GPUs, the H100 among them, give

@@ -1,7 +1,10 @@
-// Axis-aligned box: <Box min="x y z" max="x y z"> (the loader normalises min > max).
-// Slab method. An axis the ray runs parallel to (a zero direction component) constrains
-// nothing when the origin lies within the closed slab and rejects the ray otherwise; it
-// is handled explicitly, so 0 * inf never makes a NaN and a ray lying in a face plane
+// Axis-aligned box: <Box min="x y z" max="x y z" velocity=".."> (the loader normalises
+// min > max). A moving box (HAS_MOTION) is at lo, hi + velocity * g_time: intersection
+// translates the ray by -velocity * g_time and the hit point back; light sampling and
+// image maps read the box where it is at the path's time (box_at). Slab method. An axis
+// the ray runs parallel to (a zero direction component) constrains nothing when the
+// origin lies within the closed slab and rejects the ray otherwise; it is handled
+// explicitly, so 0 * inf never makes a NaN and a ray lying in a face plane
 // hits the box the same way whichever face (min or max) it lies in.
 // Per ray, once: the reciprocal direction and which axes the ray runs parallel to.
 struct BoxRay { vec3 inv; bvec3 parallel; };
@@ -10,8 +13,23 @@ BoxRay prepare_box(Ray r) {
   return BoxRay(1.0 / mix(r.d, vec3(1.0), par), par);
 }
 
+// The box at the path's time.
+BoxRec box_at(ShapeRec s) {
+  BoxRec k = box_rec(s);
+#ifdef HAS_MOTION
+  vec3 off = k.velocity * g_time;
+  k.lo += off;
+  k.hi += off;
+#endif
+  return k;
+}
+
 void intersect_box(ShapeRec s, int id, Ray r, BoxRay br, inout Hit h) {
   BoxRec k = box_rec(s);
+#ifdef HAS_MOTION
+  vec3 off = k.velocity * g_time;  // in the box's frame at time 0 (br: the direction only)
+  r.o -= off;
+#endif
   if (any(br.parallel) && any(bvec3(uvec3(br.parallel) & (uvec3(lessThan(r.o, k.lo)) | uvec3(greaterThan(r.o, k.hi)))))) return;
   vec3 ta = (k.lo - r.o) * br.inv;
   vec3 tb = (k.hi - r.o) * br.inv;
@@ -33,20 +51,23 @@ void intersect_box(ShapeRec s, int id, Ray r, BoxRay br, inout Hit h) {
   // Snap the coordinate across the face onto the face's plane.
   h.p = r.o + t * r.d;
   h.p = mix(h.p, dot(h.n, axis) > 0.0 ? k.hi : k.lo, axis);
+#ifdef HAS_MOTION
+  h.p += off;
+#endif
 }
 
 #ifdef HAS_LIGHT_BOX
 // Emissive box: a point chosen uniformly by area on the faces that face p (at most
 // three; only front faces emit), converted to a solid-angle density t^2 / (|cos| A).
 vec3 box_face_areas(ShapeRec s, vec3 p) {
-  BoxRec k = box_rec(s);
+  BoxRec k = box_at(s);
   vec3 e = k.hi - k.lo;
   vec3 visible = vec3(lessThan(p, k.lo)) + vec3(greaterThan(p, k.hi));
   return vec3(e.y * e.z, e.x * e.z, e.x * e.y) * visible;
 }
 
 bool sample_light_box(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {
-  BoxRec k = box_rec(s);
+  BoxRec k = box_at(s);
   vec3 area = box_face_areas(s, p);
   float total = area.x + area.y + area.z;
   pdf = 0.0;
@@ -90,7 +111,7 @@ vec4 tangent_box(ShapeRec s, vec3 p, vec3 n) {
   return vec4(n.z, 0.0, 0.0, 1.0);
 }
 vec2 uv_box(ShapeRec s, vec3 p, vec3 n) {
-  BoxRec k = box_rec(s);
+  BoxRec k = box_at(s);
   vec3 f = (p - k.lo) / max(k.hi - k.lo, vec3(1e-30));  // p in [0, 1]^3
   vec3 a = abs(n);
   if (a.x > 0.5) return vec2(n.x > 0.0 ? 1.0 - f.z : f.z, f.y);

@@ -1,6 +1,8 @@
-// Box: <Box min="x y z" max="x y z">: an axis-aligned box (files written for the
-// original program give min > max on some axes: normalised on load). Its record
-// holds the corners lo = min, hi = max. Intersection by the slab method with rays parallel to an axis handled
+// Box: <Box min="x y z" max="x y z" [velocity="x y z" | end="x y z"]>: an axis-aligned
+// box (files written for the original program give min > max on some axes: normalised
+// on load), translated by velocity * t over the shutter (motion blur, extension; `end`:
+// its centre at time 1). Its record holds the corners lo = min, hi = max and the
+// velocity; box.glsl intersects a moving box by translating the ray. Intersection by the slab method with rays parallel to an axis handled
 // explicitly (box.glsl); the CPU twin below is the same arithmetic.
 #pragma once
 #include "shapes/shape.h"
@@ -26,8 +28,9 @@ struct Box {
   static constexpr const char* kExample = "<Box min=\"-0.5 -0.7 -0.3\" max=\"0.6 0.4 0.9\"/>";
   static constexpr const char* kUvArgs = "";
   glm::vec3 min{-1.0f}, max{1.0f};
+  glm::vec3 velocity{0.0f};
 
-#define PT_BOX_FIELDS(F) F(vec3, lo) F(vec3, hi)
+#define PT_BOX_FIELDS(F) F(vec3, lo) F(vec3, hi) F(vec3, velocity)
   PT_KIND_RECORD(PT_BOX_FIELDS, PT_NO_FIELDS)
 
   void parse(XmlAttrs& a) {
@@ -35,16 +38,19 @@ struct Box {
     min = glm::min(p, q);
     max = glm::max(p, q);
     if (min.x == max.x && min.y == max.y && min.z == max.z) a.fail("box has no extent");
+    velocity = parse_motion(a, position());
   }
   void pack(ShapeWriter& w) const {
     w.set(rec::lo, min);
     w.set(rec::hi, max);
+    w.set(rec::velocity, velocity);
   }
-  ShapeBounds bounds(const ShapeContext&) const {
+  // Over the times the shutter sees (shape.h: swept).
+  ShapeBounds bounds(const ShapeContext& ctx) const {
     ShapeBounds b;
     b.grow(min);
     b.grow(max);
-    return b;
+    return swept(b, velocity, ctx.motion_bound);
   }
   template <class Q>
   void intersect(const Q& q, int id, Hit& h) const { intersect_box(*this, id, q.r, q.box, h); }

@@ -1,11 +1,14 @@
-// Disk: <Disk center="x y z" normal="x y z" radius="r">: the points of the plane through
-// `center` with unit normal `normal` (made unit on load) within `radius` of the centre.
+// Disk: <Disk center="x y z" normal="x y z" radius="r" [velocity="x y z" | end="x y z"]>:
+// the points of the plane through `center` with unit normal `normal` (made unit on load)
+// within `radius` of the centre, the centre moving to center + velocity * t over the
+// shutter (motion blur, extension; disk.glsl translates the ray).
 // Its normal is fixed, as a plane's: an emissive disk emits on the side the normal points
 // to (the surface step's front), and is light-sampled uniformly by area. Its record holds
-// the centre, the radius and the normal. Intersection: the plane's distance, then the
+// the centre, the radius, the normal and the velocity. Intersection: the plane's distance, then the
 // point (snapped onto the plane) tested against the radius (disk.glsl); the CPU twin below
 // is the same arithmetic. Bounds: per axis, centre +- radius * sqrt(1 - normal_i^2), the
-// disk's exact extent (pbrt-v4's Disk bounds its local z slab; this is the world box).
+// disk's exact extent (pbrt-v4's Disk bounds its local z slab; this is the world box),
+// swept over the shutter.
 #pragma once
 #include <cmath>
 
@@ -23,8 +26,9 @@ struct Disk {
   glm::vec3 center{0.0f};
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
   float radius = 1.0f;
+  glm::vec3 velocity{0.0f};
 
-#define PT_DISK_FIELDS(F) F(vec3, center) F(float, radius) F(vec3, normal)
+#define PT_DISK_FIELDS(F) F(vec3, center) F(float, radius) F(vec3, normal) F(vec3, velocity)
   PT_KIND_RECORD(PT_DISK_FIELDS, PT_NO_FIELDS)
 
   void parse(XmlAttrs& a) {
@@ -35,16 +39,19 @@ struct Disk {
     normal = n / len;
     radius = a.number("radius");
     if (!(radius > 0.0f)) a.fail("radius must be positive");
+    velocity = parse_motion(a, center);
   }
   void pack(ShapeWriter& w) const {
     w.set(rec::center, center);
     w.set(rec::radius, radius);
     w.set(rec::normal, normal);
+    w.set(rec::velocity, velocity);
   }
   float area() const { return 3.14159265f * radius * radius; }  // light selection by power
-  ShapeBounds bounds(const ShapeContext&) const {
+  // Over the times the shutter sees (shape.h: swept).
+  ShapeBounds bounds(const ShapeContext& ctx) const {
     const glm::vec3 e = radius * glm::sqrt(glm::max(glm::vec3(1.0f) - normal * normal, glm::vec3(0.0f)));
-    return {center - e, center + e};
+    return swept({center - e, center + e}, velocity, ctx.motion_bound);
   }
   template <class Q>
   void intersect(const Q& q, int id, Hit& h) const { intersect_disk(*this, id, q.r, h); }

@@ -1,9 +1,14 @@
 // Mesh: <Mesh src="model.gltf|.glb|.obj|.json" position=".." rotation=".." scale="..">,
 // an instance of a triangle mesh. Its triangles are BVH primitives with world-space
-// vertices inline (see bvh.glsl and the prim record); this file holds what a hit on one
+// vertices inline (see bvh.glsl and the prim record; a moving instance's at time 0,
+// triangle.glsl translating the ray); this file holds what a hit on one
 // needs afterwards: the interpolated per-vertex attributes (shading normal, uv).
 // Barycentrics of p (on the triangle's plane) from the sub-triangle areas.
+// A moving instance's hit point is where it is at the path's time: back to time 0 first.
 vec3 mesh_barycentrics(PrimRec t, vec3 p) {
+#ifdef HAS_MOTION
+  p -= prim_offset(t);
+#endif
   vec3 e1 = t.v1 - t.v0, e2 = t.v2 - t.v0, q = p - t.v0;
   vec3 n = cross(e1, e2);
   float nn = dot(n, n);

@@ -1,9 +1,13 @@
 // Mesh: <Mesh src="model.gltf|.glb|.obj|.json" | generate="icosphere" position=".."
-// rotation=".." scale="..">: an instance of a triangle mesh (Scene::meshes[mesh], shared
-// by its instances) placed by `transform` (object to world). Its element reads files, so
-// the loader builds it (scene/xml_meshes.cpp). Its shape record holds nothing; in the BVH
-// each of its triangles is a primitive with world-space vertices inline, intersected by
-// triangle.glsl; mesh.glsl interpolates its vertex attributes at a hit.
+// rotation=".." scale=".." [velocity="x y z" | end="x y z"]>: an instance of a triangle
+// mesh (Scene::meshes[mesh], shared by its instances) placed by `transform` (object to
+// world), the instance translated by velocity * t over the shutter (motion blur,
+// extension; `end`: its `position` at time 1). Its element reads files, so the loader
+// builds it (scene/xml_meshes.cpp). Its shape record holds the velocity; in the BVH each
+// of its triangles is a primitive with world-space vertices (at time 0) inline,
+// intersected by triangle.glsl (a moving instance's marked: the ray is translated by
+// -velocity * t, the instance's translation applied to the ray instead of its
+// triangles), bounded over the shutter; mesh.glsl interpolates its vertex attributes.
 #pragma once
 #include "shapes/shape.h"
 #include "shapes/triangle.h"
@@ -19,9 +23,11 @@ struct Mesh {
   static constexpr unsigned kNeeds = shape_bit(ShapeKind::Triangle);  // its triangles are intersected by triangle.glsl  // mesh.glsl: shading_normal_mesh, its interpolated vertex normals
   int mesh = -1;
   glm::mat4 transform{1.0f};
+  glm::vec3 velocity{0.0f};
 
-  PT_KIND_RECORD(PT_NO_FIELDS, PT_NO_FIELDS)
-  void pack(ShapeWriter&) const {}
+#define PT_MESH_FIELDS(F) F(vec3, velocity)
+  PT_KIND_RECORD(PT_MESH_FIELDS, PT_NO_FIELDS)
+  void pack(ShapeWriter& w) const { w.set(rec::velocity, velocity); }
   // Triangle `tri` in world space (the packer's arithmetic: render/packing.h mesh_triangle).
   Triangle triangle(const MeshData& m, size_t tri) const {
     const glm::uvec3 t = m.triangles[tri];
@@ -34,7 +40,7 @@ struct Mesh {
   ShapeBounds bounds(const ShapeContext& ctx) const {
     ShapeBounds b;
     for (const glm::vec3& p : (*ctx.meshes)[size_t(mesh)]->positions) b.grow(glm::vec3(transform * glm::vec4(p, 1.0f)));
-    return b;
+    return swept(b, velocity, ctx.motion_bound);
   }
   // Every triangle (a click is rare; the BVH is the GPU's).
   template <class Q>

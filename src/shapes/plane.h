@@ -1,6 +1,9 @@
-// Plane: <Plane normal="x y z" d="d">: the points p with dot(normal, p) = d, normal made
-// unit on load (d scales with it). Unbounded: outside the BVH, every ray tests it.
-// Its record holds the unit normal and d (plane.glsl); the CPU twin below is the same
+// Plane: <Plane normal="x y z" d="d" [velocity="x y z" | end="x y z"]>: the points p
+// with dot(normal, p) = d, normal made unit on load (d scales with it), translated by
+// velocity * t over the shutter (motion blur, extension: only the velocity's part along
+// the normal moves the surface, the rest slides an image map; `end`: the point
+// normal * d at time 1). Unbounded: outside the BVH, every ray tests it.
+// Its record holds the unit normal, d and the velocity (plane.glsl); the CPU twin below is the same
 // arithmetic.
 #pragma once
 #include <cmath>
@@ -18,8 +21,9 @@ struct Plane {
   static constexpr const char* kUvArgs = "";
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
   float d = 0.0f;
+  glm::vec3 velocity{0.0f};
 
-#define PT_PLANE_FIELDS(F) F(vec3, normal) F(float, d)
+#define PT_PLANE_FIELDS(F) F(vec3, normal) F(float, d) F(vec3, velocity)
   PT_KIND_RECORD(PT_PLANE_FIELDS, PT_NO_FIELDS)
 
   void parse(XmlAttrs& a) {
@@ -29,10 +33,12 @@ struct Plane {
     if (!(len > 0.0f) || !std::isfinite(len)) a.fail("plane normal must be non-zero");
     normal = n / len;  // d = dot(normal, p0) scales with the normal's length
     d = d0 / len;
+    velocity = parse_motion(a, position());
   }
   void pack(ShapeWriter& w) const {
     w.set(rec::normal, normal);
     w.set(rec::d, d);
+    w.set(rec::velocity, velocity);
   }
   ShapeBounds bounds(const ShapeContext&) const { return {glm::vec3(-T_INF), glm::vec3(T_INF)}; }  // everything
   template <class Q>

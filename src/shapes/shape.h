@@ -57,13 +57,24 @@ struct ShapeBounds {
   }
 };
 
+// b and b moved by velocity * t: the box a translation sweeps over times [0, t] (the
+// union of the two ends is exact for a straight-line motion of a box).
+inline ShapeBounds swept(ShapeBounds b, glm::vec3 velocity, float t) {
+  const glm::vec3 d = velocity * t;
+  b.lo = glm::min(b.lo, b.lo + d);
+  b.hi = glm::max(b.hi, b.hi + d);
+  return b;
+}
+
 struct ShapeContext {
   const MeshList* meshes = nullptr;  // Scene::meshes (a Mesh's triangles)
   float motion_bound = 1.0f;         // the latest time a moving shape is seen at
 };
 
-// Motion blur (extension): `velocity` (per unit time), or `end`, the centre at time 1
-// (velocity = end - start); not both. (Also read by <Light>.)
+// Motion blur (extension), on every kind: a translation over the shutter, `velocity`
+// (per unit time), or `end`, the kind's position() (a sphere's or disk's centre, a box's
+// centre, a triangle's centroid, a mesh instance's `position`, a plane's point closest to
+// the origin) at time 1 (velocity = end - start); not both. (Also read by <Light>.)
 inline glm::vec3 parse_motion(XmlAttrs& a, glm::vec3 start) {
   if (a.has("velocity") && a.has("end")) a.fail("give either 'velocity' or 'end'");
   return a.has("end") ? a.vec3("end") - start : a.vec3("velocity", glm::vec3(0.0f));

@@ -65,21 +65,58 @@ void intersect_triangle_verts(vec3 va, vec3 vb, vec3 vc, int order, int id, Ray 
   h.p = (u * va + v * vb + w * vc) / det;  // barycentric: on the triangle's plane by construction
 }
 
-// A triangle primitive of the BVH (a lone Triangle or a mesh's): vertices and edge order inline.
+// Motion blur (HAS_MOTION): a moving Triangle or mesh instance is a translation
+// velocity * g_time of its vertices at time 0; the ray is translated by the opposite
+// (tr depends on the direction only) and the hit point back. Its primitives are marked
+// (extra = 1, render/packing.cpp) and only they fetch their shape's velocity
+// (prim_velocity: generated over the kinds whose primitives are triangles).
+#ifdef HAS_MOTION
+vec3 prim_offset(PrimRec p) { return p.extra != 0.0 ? prim_velocity(p.tag) * g_time : vec3(0.0); }
+
+void intersect_triangle_moving(vec3 va, vec3 vb, vec3 vc, int order, int id, vec3 off, Ray r, TriangleRay tr, inout Hit h) {
+  float before = h.t;
+  r.o -= off;
+  intersect_triangle_verts(va, vb, vc, order, id, r, tr, h);
+  if (h.t < before) h.p += off;
+}
+#endif
+
+// A triangle primitive of the BVH (a lone Triangle or a mesh's): vertices and edge order
+// inline. With motion, one test for still and moving ones (a still one's offset is 0).
 void triangle_prim(PrimRec p, Ray r, TriangleRay tr, inout Hit h) {
+#ifdef HAS_MOTION
+  intersect_triangle_moving(p.v0, p.v1, p.v2, p.kind, p.tag, prim_offset(p), r, tr, h);
+#else
   intersect_triangle_verts(p.v0, p.v1, p.v2, p.kind, p.tag, r, tr, h);
+#endif
 }
 
 void intersect_triangle(ShapeRec s, int id, Ray r, TriangleRay tr, inout Hit h) {
   TriangleRec k = triangle_rec(s);
+#ifdef HAS_MOTION
+  intersect_triangle_moving(k.v0, k.v1, k.v2, triangle_edge_order(k.v0, k.v1, k.v2), id, k.velocity * g_time, r, tr, h);
+#else
   intersect_triangle_verts(k.v0, k.v1, k.v2, triangle_edge_order(k.v0, k.v1, k.v2), id, r, tr, h);
+#endif
+}
+
+// The triangle at the path's time (light sampling, image maps).
+TriangleRec triangle_at(ShapeRec s) {
+  TriangleRec k = triangle_rec(s);
+#ifdef HAS_MOTION
+  vec3 off = k.velocity * g_time;
+  k.v0 += off;
+  k.v1 += off;
+  k.v2 += off;
+#endif
+  return k;
 }
 
 #ifdef HAS_LIGHT_TRIANGLE
 // Emissive triangle: uniform by area (square-root barycentrics), emitting from its
 // front side only, solid-angle density t^2 / (cos A).
 bool sample_light_triangle(ShapeRec s, vec3 p, vec2 u, out vec3 wi, out float pdf, out float dist) {
-  TriangleRec k = triangle_rec(s);
+  TriangleRec k = triangle_at(s);
   vec3 c = cross(k.v1 - k.v0, k.v2 - k.v0);
   float area = 0.5 * length(c);
   vec3 n = c / (2.0 * area);
@@ -111,7 +148,7 @@ float pdf_light_triangle(ShapeRec s, vec3 p, vec3 wi, float t, vec3 n) {
 // UvRec (core/records.h), interpolated with the barycentric weights of p.
 // barycentric_triangle is the hook for meshes: a mesh hit carries its weights and skips it.
 vec3 barycentric_triangle(ShapeRec s, vec3 p) {
-  TriangleRec k = triangle_rec(s);
+  TriangleRec k = triangle_at(s);
   vec3 e1 = k.v1 - k.v0, e2 = k.v2 - k.v0, q = p - k.v0;
   float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2), d20 = dot(q, e1), d21 = dot(q, e2);
   float den = d00 * d11 - d01 * d01;

@@ -1,7 +1,11 @@
-// Triangle: <Triangle v0="x y z" v1=".." v2=".." [uv0="u v" uv1=".." uv2=".."]>: one
-// triangle (its vertices' texture coordinates, an extension, are read by <Textured>; they
-// live in the uv records, core/records.h). Its record holds v0, v1, v2 (light sampling
-// reads them); in the BVH it is a triangle primitive with its vertices inline. Intersection watertight (Woop et al.
+// Triangle: <Triangle v0="x y z" v1=".." v2=".." [uv0="u v" uv1=".." uv2=".."]
+// [velocity="x y z" | end="x y z"]>: one triangle (its vertices' texture coordinates, an
+// extension, are read by <Textured>; they live in the uv records, core/records.h),
+// translated by velocity * t over the shutter (motion blur, extension; `end`: its
+// centroid at time 1). Its record holds v0, v1, v2 (light sampling reads them) and the
+// velocity; in the BVH it is a triangle primitive with its vertices (at time 0) inline,
+// marked as moving (prim `extra`: triangle.glsl translates the ray by the velocity of
+// shape `tag`), bounded over the shutter. Intersection watertight (Woop et al.
 // 2013, "Watertight Ray/Triangle Intersection", JCGT 2(1)) with the canonical edge order
 // that makes shared edges exact (triangle.glsl); the CPU twins below are the same
 // arithmetic.
@@ -52,8 +56,9 @@ struct Triangle {
   static constexpr const char* kUvArgs = "load_uv(h.id), ";  // its vertex uv: the uv record of its shape index
   glm::vec3 v0{0.0f}, v1{1.0f, 0.0f, 0.0f}, v2{0.0f, 1.0f, 0.0f};
   glm::vec2 uv0{0.0f, 0.0f}, uv1{1.0f, 0.0f}, uv2{0.0f, 1.0f};
+  glm::vec3 velocity{0.0f};
 
-#define PT_TRIANGLE_FIELDS(F) F(vec3, v0) F(vec3, v1) F(vec3, v2)
+#define PT_TRIANGLE_FIELDS(F) F(vec3, v0) F(vec3, v1) F(vec3, v2) F(vec3, velocity)
   PT_KIND_RECORD(PT_TRIANGLE_FIELDS, PT_NO_FIELDS)
 
   void parse(XmlAttrs& a) {
@@ -64,19 +69,21 @@ struct Triangle {
     if (a.has("uv1")) uv1 = a.vec2("uv1");
     if (a.has("uv2")) uv2 = a.vec2("uv2");
     if (!(glm::length(glm::cross(v1 - v0, v2 - v0)) > 0.0f)) a.fail("triangle has zero area");
+    velocity = parse_motion(a, position());
   }
   void pack(ShapeWriter& w) const {
     w.set(rec::v0, v0);
     w.set(rec::v1, v1);
     w.set(rec::v2, v2);
+    w.set(rec::velocity, velocity);
   }
   // Its primitive in the BVH (BvhRole::Triangles): the vertices, inline.
   void vertices(glm::vec3 v[3]) const { v[0] = v0, v[1] = v1, v[2] = v2; }
   float area() const { return 0.5f * glm::length(glm::cross(v1 - v0, v2 - v0)); }  // light selection by power
-  ShapeBounds bounds(const ShapeContext&) const {
+  ShapeBounds bounds(const ShapeContext& ctx) const {
     ShapeBounds b;
     for (const glm::vec3& q : {v0, v1, v2}) b.grow(q);
-    return b;
+    return swept(b, velocity, ctx.motion_bound);
   }
   template <class Q>
   void intersect(const Q& q, int id, Hit& h) const { intersect_triangle(*this, id, q.r, q.triangle, h); }
