@@ -4,13 +4,14 @@
 //
 // phone: Playwright's device emulation of an iPhone-sized (390x844) and an Android-sized
 //   (412x915) screen, hasTouch, isMobile, device pixel ratio 3, with real touch events
-//   (CDP Input.dispatchTouchEvent): the panel starts collapsed to its bar and a tap
-//   expands it (and collapses it again); one finger's drag changes the view (the address's
-//   cam); a double tap resets it to the scene's; a pinch moves the camera forward, a
-//   two-finger pan strafes; a tap on the sphere selects it; turning the phone resizes the
-//   canvas and keeps the view; no console errors.
-// link: the same ?cam= link shows the same camera and the same image (mean) on a phone
-//   and on a desktop.
+//   (CDP Input.dispatchTouchEvent). Both: the panel starts collapsed to its bar and a tap
+//   expands it (to rows of 40-52 CSS px), a tap on the panel leaves the camera alone, one
+//   finger's drag changes the view (the address's cam), a tap on the sphere selects it, no
+//   console errors. The iPhone also: a double tap resets the view to the scene's, a pinch
+//   moves the camera (fingers together: back), a two-finger pan strafes, the panel's button
+//   collapses it, turning the phone resizes the canvas and keeps the view and the bar; and
+//   it opens on a ?cam= link, which a desktop page then opens too: the same camera and the
+//   same image (mean).
 // limits: the mobile GPU's limits, each hidden from the page by a test-only init script
 //   that wraps getExtension / getSupportedExtensions / getParameter /
 //   getShaderPrecisionFormat: no EXT_color_buffer_float (half-float accumulation, a note,
@@ -239,8 +240,10 @@ async function limitChecks(context, url) {
   const meanOf = async (scene, limits) => {
     const errors = [];
     const page = await open(context, `${url}?scene=${scene}&size=32x32&limit=4`, errors, limits);
-    await until(page, () => window.ptStats().samples >= 4 && window.ptLimits() !== null);
-    const s = await stats(page), notes = await page.evaluate(() => window.ptLimits());
+    // (or a message in place of the canvas: no app, no stats)
+    await until(page, () => !document.getElementById("error").hidden || (window.ptLoadStatus()?.samples >= 4 && window.ptLimits() !== null));
+    const s = (await stats(page)) ?? { mean: [NaN, NaN, NaN], samples: 0, accumFormat: null, scene: null, error: "no app" };
+    const notes = (await page.evaluate(() => window.ptLimits())) ?? [];
     const box = await page.evaluate(() => (document.getElementById("limits").hidden ? "" : document.getElementById("limits").textContent));
     return { page, s, notes, box, errors };
   };
