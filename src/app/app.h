@@ -233,6 +233,7 @@ class App {
   bool compact_ = false;                // narrower than kCompactWidth CSS pixels
   std::optional<bool> panel_collapsed_;  // set on the first frame: collapsed when compact
   glm::vec4 bar_rect_{0.0f}, panel_rect_{0.0f}, hide_rect_{0.0f};  // device pixels, y down (x, y, w, h), as last drawn
+  float panel_scroll_ = 0.0f;  // the expanded panel's scroll (a drag of its background scrolls it)
 
   // Resolution: the render size is render_scale_ x the canvas; while the camera moves
   // (until kSettleMs after the last change) it is kMotionScale of that, refined at full

@@ -135,6 +135,7 @@ bool App::draw_panel_bar() {
 void App::draw_panel_collapse() {
   const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
   panel_rect_ = glm::vec4(p.x, p.y, s.x, s.y);
+  panel_scroll_ = ImGui::GetScrollY();
   bar_rect_ = glm::vec4(0.0f);
   hide_rect_ = glm::vec4(0.0f);
   if (!compact_) return;
@@ -147,12 +148,12 @@ std::string App::ui_json() const {
   char j[512];
   std::snprintf(j, sizeof j,
                 "{\"compact\":%s,\"panelCollapsed\":%s,\"touchScreen\":%s,\"pixelsPerCss\":%g,\"fingers\":%d,"
-                "\"bar\":[%g,%g,%g,%g],\"panel\":[%g,%g,%g,%g],\"hide\":[%g,%g,%g,%g],\"fontPixels\":%g,\"rowPixels\":%g,\"accumFormat\":\"%s\"}",
+                "\"bar\":[%g,%g,%g,%g],\"panel\":[%g,%g,%g,%g],\"hide\":[%g,%g,%g,%g],\"panelScroll\":%g,\"fontPixels\":%g,\"rowPixels\":%g,\"accumFormat\":\"%s\"}",
                 compact_ ? "true" : "false", panel_collapsed_.value_or(false) ? "true" : "false", touch_screen_ ? "true" : "false",
                 double(pixels_per_css_), touch_.fingers(), double(bar_rect_.x), double(bar_rect_.y), double(bar_rect_.z),
                 double(bar_rect_.w), double(panel_rect_.x), double(panel_rect_.y), double(panel_rect_.z), double(panel_rect_.w),
                 double(hide_rect_.x), double(hide_rect_.y), double(hide_rect_.z), double(hide_rect_.w),
-                double(ImGui::GetFontSize()), double(ImGui::GetFrameHeightWithSpacing()),
+                double(panel_scroll_), double(ImGui::GetFontSize()), double(ImGui::GetFrameHeightWithSpacing()),
                 renderer_->accum_format() == GL_RGBA32F ? "rgba32f" : "rgba16f");
   return j;
 }

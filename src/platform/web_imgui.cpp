@@ -96,8 +96,8 @@ void imgui_begin(int w, int h) {
     if (g_touch.down && !g_touch.pressed && background && io.MouseDownDuration[ImGuiMouseButton_Left] > 0.0f) {
       io.MouseWheel += (g_touch.pos.y - g_touch.scrolled_y) / (5.0f * ImGui::GetFontSize());
       io.MousePos = g_touch.anchor;
+      g_touch.scrolled_y = g_touch.pos.y;
     }
-    g_touch.scrolled_y = g_touch.pos.y;
     g_touch.pressed = false;
     if (!io.MouseDown[ImGuiMouseButton_Left]) {  // the release frame
       g_touch.active = false;

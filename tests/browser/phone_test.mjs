@@ -182,7 +182,8 @@ async function phoneChecks(context, url, phone, full) {
 
   // The bar, tapped: the panel; its button: the bar again.
   const camBefore = await addressCam(page);
-  await touch.tap((ui.bar[0] + ui.bar[2] * 0.5) / dpr, (ui.bar[1] + ui.bar[3] * 0.5) / dpr);
+  const bar = ui.bar, tapBar = () => touch.tap((bar[0] + bar[2] * 0.5) / dpr, (bar[1] + bar[3] * 0.5) / dpr);
+  await tapBar();
   await until(page, () => !window.ptUi().panelCollapsed && window.ptUi().panel[3] > 0, null, 10000).catch(() => {});
   await page.waitForTimeout(300);
   ui = await page.evaluate(() => window.ptUi());
@@ -196,6 +197,23 @@ async function phoneChecks(context, url, phone, full) {
     await touch.tap((ui.hide[0] + ui.hide[2] * 0.5) / dpr, (ui.hide[1] + ui.hide[3] * 0.5) / dpr);  // the first row's button
     await until(page, () => window.ptUi().panelCollapsed, null, 10000).catch(() => {});
     check(`${phone.name}: the panel's button collapses it again`, (await page.evaluate(() => window.ptUi())).panelCollapsed);
+    // Expanded again: a drag up on the panel's text (near its bottom, left: "samples ...")
+    // scrolls it, and is not the camera's either.
+    await tapBar();
+    await until(page, () => !window.ptUi().panelCollapsed && window.ptUi().panel[3] > 0, null, 10000).catch(() => {});
+    let panel = null;  // as drawn once its size has settled (auto-resized over a frame or two)
+    for (let k = 0; k < 20; k++) {
+      await page.waitForTimeout(200);
+      const now = (await page.evaluate(() => window.ptUi())).panel;
+      if (panel && now.join() === panel.join()) break;
+      panel = now;
+    }
+    const x = panel[0] / dpr + 40, y = (panel[1] + panel[3]) / dpr - 25;
+    await touch.gesture([[x, y]], [[x, y - 200]]);
+    await until(page, () => window.ptUi().panelScroll > 0, null, 10000).catch(() => {});
+    const scrolled = await page.evaluate(() => window.ptUi());
+    check(`${phone.name}: a drag on the panel's background scrolls it`, scrolled.panelScroll > 100 && (await addressCam(page)) === camBefore,
+          `scroll ${scrolled.panelScroll}, cam ${await addressCam(page)} (was ${camBefore})`);
     // Turned sideways: the canvas follows, the view stays.
     await page.setViewportSize({ width: H, height: W });
     await until(page, (w) => document.getElementById("canvas").width === w, H * 3, 10000).catch(() => {});
@@ -203,8 +221,8 @@ async function phoneChecks(context, url, phone, full) {
     s = await stats(page);
     const canvas = await page.evaluate(() => [document.getElementById("canvas").width, document.getElementById("canvas").height]);
     ui = await page.evaluate(() => window.ptUi());
-    check(`${phone.name}: turning the phone resizes the canvas, keeps the view and the collapsed panel`, canvas[0] === H * 3 &&
-          canvas[1] === W * 3 && camOf(s) === kSceneCam && ui.compact && ui.panelCollapsed, `canvas ${canvas}, cam ${camOf(s)} (was ${kSceneCam}), ui ${JSON.stringify(ui)}`);
+    check(`${phone.name}: turning the phone resizes the canvas, keeps the view and the (expanded) compact panel`, canvas[0] === H * 3 &&
+          canvas[1] === W * 3 && camOf(s) === kSceneCam && ui.compact && !ui.panelCollapsed, `canvas ${canvas}, cam ${camOf(s)} (was ${kSceneCam}), ui ${JSON.stringify(ui)}`);
     await shot(page, `${phone.name}-landscape`);
     at("turned");
   }
