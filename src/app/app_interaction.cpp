@@ -162,11 +162,12 @@ std::string App::ui_json() const {
 // and restart; the kinds do not change, so the program is reused.
 void App::draw_selection_panel(int fb_w) {
   if (selected_ < 0 || selected_ >= int(scene_.shapes.size())) return;
-  // On a small screen at the bottom, above the page's Open button (the top holds the
-  // panel's bar), at most 40% of the height (it scrolls); else top right.
-  if (compact_) {
+  // On a small screen in portrait at the bottom, above the page's Open button (the top
+  // holds the panel's bar), at most 40% of the height (it scrolls); else top right (on a
+  // small screen at most 60% of its height).
+  if (compact_) ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(FLT_MAX, float(fb_h_) * (fb_h_ > fb_w ? 0.4f : 0.6f)));
+  if (compact_ && fb_h_ > fb_w) {
     ImGui::SetNextWindowPos(ImVec2(float(fb_w) * 0.5f, float(fb_h_) - 56.0f * pixels_per_css_), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
-    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(FLT_MAX, float(fb_h_) * 0.4f));
   } else {
     ImGui::SetNextWindowPos(ImVec2(float(fb_w) - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
   }
