@@ -38,5 +38,6 @@ if [[ -z "${PT_SKIP_BROWSER:-}" ]]; then
   node tests/browser/app_test.mjs --web build/web
   node tests/browser/load_test.mjs --web build/web --site build/site
   node tests/browser/error_test.mjs --web build/web
+  node tests/browser/phone_test.mjs --web build/web   # phones: touch, the small panel, mobile GPU limits
 fi
 echo "== all tests passed in $(( $(date +%s) - start )) s"

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/env_panel.h"
+#include "app/touch.h"
 #include "gpu/texture.h"
 #include "render/packing.h"
 #include "render/pacing.h"
@@ -83,6 +84,15 @@ class App {
   std::string scene_files_json() const;                  // Scene::files of the current scene
   // The platform: keys move the camera only while the canvas has keyboard focus.
   void set_keyboard_enabled(bool on) { keys_enabled_ = on; }
+  // Touch (app_interaction.cpp, issue 16): the platform feeds the recogniser the touches
+  // that started on the image, and says each frame how many device pixels a CSS pixel is
+  // and whether the screen is a touch screen. Below kCompactWidth CSS pixels of width (or
+  // of height on a touch screen: a phone turned sideways) the panel starts collapsed to a
+  // one-line bar.
+  TouchRecognizer& touch() { return touch_; }
+  void set_display(float pixels_per_css, bool touch_screen);
+  static constexpr float kCompactWidth = 600.0f;
+  std::string ui_json() const;  // the panel's state and rectangles, the touch state (ptUi())
   // The GL context was lost and is back: every GL object is re-created (the scene model,
   // camera and settings are kept) and rendering starts again.
   void context_restored();
@@ -106,6 +116,14 @@ class App {
   // app_interaction.cpp: picking and the selection panel, render size.
   void scene_edited(int moved_shape);  // after a panel changed scene_ (-1: no shape moved)
   void handle_click();
+  void pick_at(glm::vec2 pos);  // a click's or a tap's selection (device pixels, y down)
+  // The touch gestures of the frame, applied to c (look as the mouse drag at deg_per_pixel,
+  // pinch, pan; a tap picks, a double tap resets to the scene's view); true if c changed.
+  bool apply_touch(Camera& c, float deg_per_pixel);
+  // The compact panel: the one-line bar in place of the collapsed panel (true: drawn, the
+  // panel is not), and the expanded panel's button that collapses it again.
+  bool draw_panel_bar();
+  void draw_panel_collapse();
   void draw_selection_panel(int fb_w);
   void draw_view_controls();
   glm::ivec2 render_size(int fb_w, int fb_h, double now_ms) const;
@@ -207,6 +225,15 @@ class App {
   glm::vec2 press_pos_{0.0f};
   bool press_on_image_ = false;
   bool keys_enabled_ = true;
+
+  // Touch and the small screen's panel (app_interaction.cpp).
+  TouchRecognizer touch_;
+  float pixels_per_css_ = 1.0f;
+  bool touch_screen_ = false;
+  bool compact_ = false;                // narrower than kCompactWidth CSS pixels
+  std::optional<bool> panel_collapsed_;  // set on the first frame: collapsed when compact
+  glm::vec4 bar_rect_{0.0f}, panel_rect_{0.0f}, hide_rect_{0.0f};  // device pixels, y down (x, y, w, h), as last drawn
+  float panel_scroll_ = 0.0f;  // the expanded panel's scroll (a drag of its background scrolls it)
 
   // Resolution: the render size is render_scale_ x the canvas; while the camera moves
   // (until kSettleMs after the last change) it is kMotionScale of that, refined at full

@@ -83,6 +83,9 @@ bool App::work(double budget_ms) {
 
 void App::load_failed(std::string path, std::string why) {  // copies: loading_ holds the originals
   loading_.reset();
+  // The scene's name where the reason lacks it (a GPU limit; a parse error has file:line).
+  const std::string file = path.substr(path.find_last_of('/') + 1);
+  if (why.find(file) == std::string::npos) why = file + ": " + why;
   error_ = why;
   if (loads_ == 0) {
     // Nothing rendered yet, so there is no previous scene to keep: fall back to the

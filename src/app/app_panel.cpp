@@ -74,6 +74,7 @@ void App::handle_input(double dt_s) {
     c.position += forward * (io.MouseWheel * 5.0f * step);
     changed = true;
   }
+  changed |= apply_touch(c, kLookDegPerPixel);  // touch gestures (app_interaction.cpp)
 
   if (changed) {
     c.pitch = std::clamp(c.pitch, -89.0f, 89.0f);
@@ -114,8 +115,10 @@ void App::draw_panel() {
   const auto label = [&](const std::string& path) {
     return path.rfind(root + "/", 0) == 0 ? path.substr(root.size() + 1) : path;
   };
+  if (draw_panel_bar()) return;  // a small screen's collapsed panel (app_interaction.cpp)
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::Begin("Path tracer", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  draw_panel_collapse();
   // Long texts (errors, the GPU's name) wrap instead of widening the auto-sized panel.
   ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
   ImGui::PushItemWidth(ImGui::GetFontSize() * 14.0f);

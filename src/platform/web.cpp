@@ -1,7 +1,8 @@
 // The web platform: a GLFW window on the page's canvas (WebGL 2) and the browser's
 // animation-frame loop, which draws the app's frames and its preparation's slices. The
 // context's loss and extensions are in web_context.cpp, Dear ImGui's backends in
-// web_imgui.cpp, what the page calls and provides in web_hooks.cpp.
+// web_imgui.cpp, what the page calls and provides in web_hooks.cpp, where a touch goes in
+// web_touch.cpp.
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -54,6 +55,7 @@ void frame() {
   g_app->set_keyboard_enabled(pt::web::canvas_focused());
   int w = 0, h = 0;
   sync_canvas_size(&w, &h);
+  g_app->set_display(float(emscripten_get_device_pixel_ratio()), pt::web::touch_screen());
   pt::web::imgui_begin(w, h);
   g_app->frame(w, h, emscripten_get_now());
   pt::web::imgui_end();

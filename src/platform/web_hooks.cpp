@@ -4,6 +4,7 @@
 // services the app calls (a download, a scene fetch, an error message), and the page's
 // URL parameters as the app's options.
 #include "platform/web_hooks.h"
+#include "platform/web_touch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -118,6 +119,17 @@ EMSCRIPTEN_KEEPALIVE const char* pt_load_status() {
 // The current view as URL parameters: cheap (no read-back), for keeping the address current.
 EMSCRIPTEN_KEEPALIVE const char* pt_view_query() {
   g_stats = g_app ? g_app->view_query() : std::string();
+  return g_stats.c_str();
+}
+
+// A touch point on the canvas (web/index.html; phase: web_touch.h's TouchPhase).
+EMSCRIPTEN_KEEPALIVE void pt_touch(int phase, int id, double x, double y, double t_ms) {
+  pt::web::touch_event(g_app, pt::web::TouchPhase(phase), id, float(x), float(y), t_ms);
+}
+
+// The panel's state and rectangles, the touch state (App::ui_json; ptUi()).
+EMSCRIPTEN_KEEPALIVE const char* pt_ui_json() {
+  g_stats = g_app ? g_app->ui_json() : std::string("null");
   return g_stats.c_str();
 }
 
