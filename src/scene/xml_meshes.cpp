@@ -115,6 +115,15 @@ int Loader::gltf_material(const GltfMaterial& g, XmlAttrs& a) {
   add(g.metallic_roughness_map, kLinear, p.metal_rough);
   add(g.normal_map, kNormal, p.normal);
   add(g.emissive_map, kSrgb, p.emissive);
+  p.lobes = GltfLobes{.specular = g.specular, .specularColor = g.specular_color, .clearcoat = g.clearcoat,
+                      .clearcoatRoughness = g.clearcoat_roughness, .sheenColor = g.sheen_color, .sheenRoughness = g.sheen_roughness};
+  add(g.specular_map, kLinear, p.specular);  // its alpha
+  add(g.specular_color_map, kSrgb, p.specular_color);
+  add(g.clearcoat_map, kLinear, p.clearcoat);
+  add(g.clearcoat_roughness_map, kLinear, p.clearcoat_roughness);
+  add(g.clearcoat_normal_map, kNormal, p.clearcoat_normal);
+  add(g.sheen_color_map, kSrgb, p.sheen_color);
+  add(g.sheen_roughness_map, kLinear, p.sheen_roughness);  // its alpha
   m.params = p;
   scene.materials.push_back(m);
   return int(scene.materials.size()) - 1;
