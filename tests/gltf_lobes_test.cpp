@@ -27,21 +27,22 @@ namespace {
 Features lobe_features() {
   Features f = all_features();
   f.material_features |= feature_bit(MaterialFeature::GltfSpecular) | feature_bit(MaterialFeature::GltfClearcoat) |
-                         feature_bit(MaterialFeature::GltfSheen);
+                         feature_bit(MaterialFeature::GltfSheen) | feature_bit(MaterialFeature::GltfTransmission);
   return f;
 }
 
 // GLSL of make_material(): MetallicRoughness `mr` as packed, with the clearcoat's normal
 // `nc` (shading frame; the hit field GltfPbr sets) when it is not +z.
-std::string material_glsl(const MetallicRoughness& mr, glm::vec3 nc = glm::vec3(0.0f, 0.0f, 1.0f)) {
+// `transmission`: the thin-walled transmission (a hit field too: GltfPbr's).
+std::string material_glsl(const MetallicRoughness& mr, glm::vec3 nc = glm::vec3(0.0f, 0.0f, 1.0f), float transmission = 0.0f) {
   std::string s = glsl_material(Material(mr), "packed_material");
-  char buf[512];
+  char buf[640];
   std::snprintf(buf, sizeof buf,
                 "MaterialRec make_material() {\n  MaterialRec m = packed_material();\n  vec3 nc = normalize(vec3(%.9g, %.9g, %.9g));\n"
-                "  if (nc.z < 1.0) {\n    MetallicRoughnessRec q = metallic_roughness_rec(m);\n"
-                "    q.coat_normal = 1.0 + gltf_pack2((nc.xy + 1.0) * (2047.0 / 4095.0));\n    m = with_metallic_roughness_rec(m, q);\n  }\n"
-                "  return m;\n}\n",
-                double(nc.x), double(nc.y), double(nc.z));
+                "  MetallicRoughnessRec q = metallic_roughness_rec(m);\n"
+                "  if (nc.z < 1.0) q.coat_normal = 1.0 + gltf_pack2((nc.xy + 1.0) * (2047.0 / 4095.0));\n"
+                "  q.transmission = %.9f;\n  return with_metallic_roughness_rec(m, q);\n}\n",
+                double(nc.x), double(nc.y), double(nc.z), double(transmission));
   return s + buf;
 }
 
@@ -49,6 +50,7 @@ struct LobeCase {
   const char* name;
   MetallicRoughness mr;
   glm::vec3 nc{0.0f, 0.0f, 1.0f};
+  float transmission = 0.0f;
 };
 
 std::vector<LobeCase> lobe_cases() {
@@ -67,11 +69,14 @@ std::vector<LobeCase> lobe_cases() {
                        {.specular = 0.7f, .specularColor = glm::vec3(0.8f, 1.0f, 0.9f), .clearcoat = 0.6f, .clearcoatRoughness = 0.4f,
                         .sheenColor = glm::vec3(0.5f), .sheenRoughness = 0.7f}),
        tilt},
+      {"thin transmission", mr(glm::vec3(0.8f, 0.9f, 0.6f), 0.1f, 0.4f, {}), glm::vec3(0.0f, 0.0f, 1.0f), 0.8f},
+      {"smooth thin transmission", mr(glm::vec3(0.8f, 0.9f, 0.6f), 0.0f, 0.0f, {.sheenColor = glm::vec3(0.3f), .sheenRoughness = 0.5f}),
+       glm::vec3(0.0f, 0.0f, 1.0f), 0.6f},
   };
 }
 
 constexpr double kCos[] = {0.8, 0.2, 0.02};
-const double kAlpha = sidak_alpha(0.01, 5 * 3);
+const double kAlpha = sidak_alpha(0.01, 7 * 3);
 
 // The mean sampled weight (rgb) and its standard error (max over channels) at incidence cos_o.
 struct Albedo {
@@ -102,7 +107,7 @@ TEST_CASE("glTF lobes: chi-square of the sampler with each extension lobe, grazi
   test_gl();
   for (const LobeCase& c : lobe_cases())
     for (double cos_o : kCos) {
-      DirectionCase dc{material_glsl(c.mr, c.nc) + incident(cos_o) + kBsdfPdfHelper, kBsdfSample, kBsdfDensity};
+      DirectionCase dc{material_glsl(c.mr, c.nc, c.transmission) + incident(cos_o) + kBsdfPdfHelper, kBsdfSample, kBsdfDensity};
       dc.features = lobe_features();
       const std::string name = std::string("gltf ") + c.name + " cos_o=" + std::to_string(cos_o).substr(0, 4);
       CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
@@ -113,7 +118,7 @@ TEST_CASE("glTF lobes: sampled weights equal f cos / pdf of the evaluated BSDF",
   test_gl();
   for (const LobeCase& c : lobe_cases())
     for (double cos_o : kCos) {
-      GlslKernel k(material_glsl(c.mr, c.nc) + incident(cos_o) +
+      GlslKernel k(material_glsl(c.mr, c.nc, c.transmission) + incident(cos_o) +
                        "vec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 99u), 0u);\n  BsdfSample s;\n"
                        "  if (!material_sample(make_material(), WO, true, vec3(rand01(), rand01(), rand01()), s) || s.delta) return vec4(0.0);\n"
                        "  float pdf;\n  vec3 f = material_eval(make_material(), WO, s.wi, true, pdf);\n"
@@ -134,7 +139,7 @@ TEST_CASE("glTF lobes: reciprocity of the specular and sheen lobes and of the co
       "vec3 dir(float a, float b) { float z = max(a, 1e-3); float r = sqrt(1.0 - z * z); return vec3(r * cos(6.2831853 * b), r * sin(6.2831853 * b), z); }\n";
   // The whole BSDF where its layering is reciprocal (no coat): f(a, b) = f(b, a).
   for (const LobeCase& c : lobe_cases()) {
-    if (c.mr.lobes.clearcoat > 0.0f) continue;
+    if (c.mr.lobes.clearcoat > 0.0f || c.transmission > 0.0f) continue;
     for (float roughness : {0.1f, 0.5f, 1.0f}) {
       MetallicRoughness mr = c.mr;
       mr.roughness = roughness;
@@ -151,6 +156,22 @@ TEST_CASE("glTF lobes: reciprocity of the specular and sheen lobes and of the co
       INFO(c.name << " roughness " << roughness);
       CHECK(worst < 1e-3f);
     }
+  }
+  // The thin-walled transmission: f(a, b) = f(-b, -a)... seen from either side, a light
+  // path a -> b through the sheet is the path b -> a reversed: f(a, b) / |b.z| = f(b', a') / |a.z|
+  // with b' = -b and a' = -a mirrored onto the viewer's side (b' above, a' below).
+  {
+    GlslKernel t(material_glsl(lobe_cases()[5].mr, glm::vec3(0.0f, 0.0f, 1.0f), 0.8f) + dir +
+                     "vec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 9u), 0u);\n"
+                     "  vec3 a = dir(rand01(), rand01()), b = -dir(rand01(), rand01());\n  float p;\n"
+                     "  vec3 fab = material_eval(make_material(), a, b, true, p) / abs(b.z);\n"
+                     "  vec3 fba = material_eval(make_material(), -b, -a, true, p) / abs(a.z);\n"
+                     "  return vec4(fab.r, fba.r, fab.b, fba.b);\n}\n",
+                 lobe_features());
+    float worst_t = 0.0f;
+    for (const glm::vec4& v : t.run(20000))
+      for (int ch : {0, 2}) worst_t = std::max(worst_t, std::abs(v[ch] - v[ch + 1]) / std::max(1e-3f, std::max(v[ch], v[ch + 1])));
+    CHECK(worst_t < 1e-3f);
   }
   // The coat's own lobe D G2 / (4 |n_c.l| |n_c.v|) around a tilted normal. (Its weight
   // clearcoat F_c(n_c.v) is the extension's fresnel_coat, of v alone: docs/gltf.md.)
@@ -195,6 +216,25 @@ TEST_CASE("glTF lobes: closed forms of the specular and clearcoat Fresnel terms"
     const Albedo m = albedo(material_glsl(mirror), c);
     INFO("coated mirror, cos " << c << ": " << m.mean.x << " (se " << m.se << ")");
     CHECK(std::abs(m.mean.x - 1.0) < 4 * m.se + 1e-5);
+    // A smooth white thin sheet of transmission 1: it reflects F and passes 1 - F
+    // straight through (F = Schlick of 0.04): 1 in all, 1 - F of it below the surface.
+    const std::string sheet = material_glsl(MetallicRoughness{.baseColor = glm::vec3(1.0f), .metallic = 0.0f, .roughness = 0.0f},
+                                            glm::vec3(0.0f, 0.0f, 1.0f), 1.0f);
+    const Albedo t = albedo(sheet, c);
+    GlslKernel below(sheet + incident(c) +
+                         "vec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 32u), 0u);\n  BsdfSample s;\n"
+                         "  if (!material_sample(make_material(), WO, true, vec3(rand01(), rand01(), rand01()), s) || s.wi.z >= 0.0) return vec4(0.0);\n"
+                         "  return vec4(s.weight, distance(s.wi, -WO));\n}\n",
+                     lobe_features());
+    double sum = 0, sq = 0, off = 0;
+    const int n = 200000;
+    for (const glm::vec4& v : below.run(n)) sum += v.x, sq += double(v.x) * v.x, off = std::max(off, double(v.w));
+    const double through = sum / n, through_se = std::sqrt(std::max(0.0, sq / n - through * through) / n);
+    INFO("thin sheet, cos " << c << ": " << t.mean.x << " (se " << t.se << "), through " << through << " vs " << 1 - schlick(0.04, c)
+                            << " (se " << through_se << ")");
+    CHECK(std::abs(t.mean.x - 1.0) < 4 * t.se + 1e-5);
+    CHECK(std::abs(through - (1 - schlick(0.04, c))) < 4 * through_se + 1e-5);
+    CHECK(off < 1e-6);  // no bending
   }
 }
 
@@ -232,14 +272,14 @@ TEST_CASE("glTF lobes: furnace sweep of white materials never above 1", "[gpu][t
   // under a sky of 1) of white materials at incidences cos 1, 0.7, 0.4 and 0.2, swept over
   // pairs of axes (5 values each) with the others at metallic 0, roughness 0.5, specular 1,
   // clearcoat 0 (its roughness = the base's), sheen 0 (sheen colour = the value, roughness
-  // 0.5). One kernel per pair: each invocation sets its record's fields from its input
+  // 0.5), transmission 0 (thin-walled: what passes counts too). One kernel per pair: each invocation sets its record's fields from its input
   // (configuration, incidence) and also samples the core material of the same metallic
   // and roughness. Head-on every material returns at most 1; at oblique incidence the
   // core glTF BSDF itself returns more than 1 (Appendix B's Lambertian weighted by
   // 1 - F(v.h), docs/gltf.md), so there an extension must return at most max(1, core):
   // its layering adds no energy. Printed: the largest over the incidences (docs/gltf.md).
-  const char* names[] = {"metallic", "roughness", "specular", "clearcoat", "sheen"};
-  const int pairs[][2] = {{0, 1}, {2, 1}, {3, 1}, {4, 1}, {3, 0}, {4, 0}, {4, 3}, {2, 3}};
+  const char* names[] = {"metallic", "roughness", "specular", "clearcoat", "sheen", "transmission"};
+  const int pairs[][2] = {{0, 1}, {2, 1}, {3, 1}, {4, 1}, {5, 1}, {3, 0}, {4, 0}, {4, 3}, {2, 3}, {5, 3}};
   const double cosines[] = {1.0, 0.7, 0.4, 0.2};
   constexpr int kPer = 40000;
   MetallicRoughness white{.baseColor = glm::vec3(1.0f)};
@@ -250,12 +290,13 @@ TEST_CASE("glTF lobes: furnace sweep of white materials never above 1", "[gpu][t
     GlslKernel k(material_glsl(white) + consts +
                      "vec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 31u), 0u);\n"
                      "  int cfg = int(x.x);\n  float cos_o = x.y;\n"
-                     "  float v[5] = float[](0.0, 0.5, 1.0, 0.0, 0.0);\n"
+                     "  float v[6] = float[](0.0, 0.5, 1.0, 0.0, 0.0, 0.0);\n"
                      "  v[PA] = float(cfg / 5) / 4.0;\n  v[PB] = float(cfg % 5) / 4.0;\n"
                      "  MaterialRec m = make_material();\n  MetallicRoughnessRec q = metallic_roughness_rec(m);\n"
                      "  q.metallic = v[0];\n  q.roughness = v[1];\n  q.specular = v[2];\n"
                      "  q.coat = gltf_pack2(vec2(v[3], v[1]));\n  q.sheen_rg = gltf_pack2(vec2(v[4]));\n  q.sheen_br = gltf_pack2(vec2(v[4], 0.5));\n"
-                     "  MaterialRec core = with_metallic_roughness_rec(m, MetallicRoughnessRec(v[0], v[1], q.f0, 1.0, 0.0, 0.0, 0.0, 0.0));\n"
+                     "  q.transmission = v[5];\n"
+                     "  MaterialRec core = with_metallic_roughness_rec(m, MetallicRoughnessRec(v[0], v[1], q.f0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0));\n"
                      "  m = with_metallic_roughness_rec(m, q);\n"
                      "  vec3 wo = vec3(sqrt(1.0 - cos_o * cos_o), 0.0, cos_o);\n  BsdfSample s, c;\n"
                      "  vec4 r = vec4(0.0);\n"
@@ -312,13 +353,23 @@ TEST_CASE("glTF lobes: each lobe is compiled in only where a material uses it", 
   CHECK(coat.find("const float SHEEN_E[") == std::string::npos);
   CHECK(sheen.find("const float SHEEN_E[") != std::string::npos);
   CHECK(sheen.find("float gltf_coat_eval(") == std::string::npos);
+  auto gltf = [](const std::string& attrs) {
+    const Scene s = load_scene_text("<SceneLevel><Camera position=\"0 0 5\"/><Objects><Sphere center=\"0 0 0\" radius=\"1\"><GltfPbr doubleSided=\"true\" " +
+                                        attrs + "/></Sphere></Objects></SceneLevel>",
+                                    repo_path("scenes/x.xml"));
+    return generate_integrator(Features::of(s)).text;
+  };
+  const std::string pbr = gltf(""), thin = gltf("transmission=\"0.5\"");
+  CHECK(pbr.find("#define HAS_GLTF_TRANSMISSION") == std::string::npos);
+  CHECK(thin.find("#define HAS_GLTF_TRANSMISSION") != std::string::npos);
   // docs/scenes.md's table of the program's size per extension set (regenerated here; the
   // current one is written to the build folder as lobes-table.md).
   const std::string all = program("specular=\"0.5\" clearcoat=\"0.5\" sheenColor=\"0.5 0.5 0.5\"");
   std::string table = "| glTF extensions in the scene | shader (bytes) |\n|---|---|\n";
   for (const auto& [name, text] : {std::pair<const char*, const std::string*>{"core (Appendix B, emissive_strength, ior)", &core},
                                    {"+ KHR_materials_specular", &spec}, {"+ KHR_materials_clearcoat", &coat},
-                                   {"+ KHR_materials_sheen", &sheen}, {"+ specular, clearcoat and sheen", &all}})
+                                   {"+ KHR_materials_sheen", &sheen}, {"+ specular, clearcoat and sheen", &all},
+                                   {"GltfPbr (the same with maps)", &pbr}, {"GltfPbr + KHR_materials_transmission (thin-walled)", &thin}})
     table += std::string("| ") + name + " | " + std::to_string(text->size()) + " |\n";
   std::ofstream(std::string(PT_BINARY_DIR) + "/lobes-table.md") << table;
   const auto doc = read_file(repo_path("docs/scenes.md"));

@@ -9,7 +9,8 @@ down), dielectric-grid (5 spheres, roughness 0..1, ior 1.5 through KHR_materials
 maps-quad (base colour and normal maps), emissive (emissive strength 1, 4, 16),
 clearcoat (KHR_materials_clearcoat over a red base: factor 0..1, then coat roughness 0..1),
 sheen (KHR_materials_sheen on a draped cloth and spheres of sheen roughness 0.2..1),
-specular (KHR_materials_specular: specularFactor 0..1, specularColor).
+specular (KHR_materials_specular: specularFactor 0..1, specularColor), transmission
+(thin-walled KHR_materials_transmission: clear, frosted, amber spheres).
 Tests (tests/gltf_materials_test.cpp, tests/gltf_lobes_test.cpp): test-*.gltf, quads z = 0
 over [-1, 1]^2 facing +z.
 """
@@ -227,6 +228,12 @@ def lobes():
                         "metallicFactor": 0, "roughnessFactor": 0.9},
                         "extensions": {"KHR_materials_sheen": {"sheenColorFactor": [0.95, 0.55, 0.75], "sheenRoughnessFactor": 0.2 + 0.2 * i}}})
         g.node(g.mesh(*sphere(0.3), m), (0.75 * (i - 2), 0.75, 1.2))
+    g.write()
+    g = Gltf("transmission")  # thin-walled KHR_materials_transmission: clear, frosted (roughness 0.3), tinted amber
+    for i, (rough, color) in enumerate(((0.0, [1, 1, 1, 1]), (0.3, [1, 1, 1, 1]), (0.0, [1.0, 0.6, 0.2, 1]))):
+        m = g.material({"name": "thin-%d" % i, "doubleSided": True, "pbrMetallicRoughness": {"baseColorFactor": color, "metallicFactor": 0,
+                        "roughnessFactor": rough}, "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
+        g.node(g.mesh(*sphere(0.5), m), (1.2 * (i - 1), 0.5, 0))
     g.write()
     g = Gltf("specular")  # a grey dielectric of roughness 0.3: specularFactor 0..1; last: specularColor orange
     for i in range(6):

@@ -12,7 +12,8 @@
   X(EmissionMaps, "EMISSION_MAPS", nullptr) /* emission read from an image map at the hit */        \
   X(GltfSpecular, "GLTF_SPECULAR", nullptr) /* KHR_materials_specular: coloured F0, F90 weight */   \
   X(GltfClearcoat, "GLTF_CLEARCOAT", "materials/gltf_clearcoat.glsl") /* KHR_materials_clearcoat */ \
-  X(GltfSheen, "GLTF_SHEEN", "materials/gltf_sheen.glsl")   /* KHR_materials_sheen */
+  X(GltfSheen, "GLTF_SHEEN", "materials/gltf_sheen.glsl")   /* KHR_materials_sheen */       \
+  X(GltfTransmission, "GLTF_TRANSMISSION", nullptr) /* KHR_materials_transmission, thin-walled */
 
 namespace pt {
 

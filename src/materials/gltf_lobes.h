@@ -8,7 +8,10 @@
 //    fresnel_coat);
 //  - KHR_materials_sheen: the Charlie lobe of colour sheenColor and roughness sheenRoughness
 //    over the base, which is scaled by 1 - max(sheenColor) E(cos) (the extension's
-//    albedo scaling, E tabulated at build time: tools/gen_sheen_lut.py).
+//    albedo scaling, E tabulated at build time: tools/gen_sheen_lut.py);
+//  - KHR_materials_transmission, thin-walled (no KHR_materials_volume): the dielectric's
+//    diffuse base becomes mix(diffuse, specular_btdf, transmission), the BTDF the GGX lobe
+//    mirrored through the surface (a thin sheet: no bending), tinted by the base colour.
 // Two unit numbers share a record slot (12 bits each: gltf_pack2, exact in a float), so
 // all the lobes fit one material record.
 #pragma once
@@ -35,13 +38,15 @@ struct GltfLobes {
   float clearcoatRoughness = 0.0f;  //   clearcoatRoughnessFactor
   glm::vec3 sheenColor{0.0f};       // KHR_materials_sheen: sheenColorFactor
   float sheenRoughness = 0.0f;      //   sheenRoughnessFactor
+  float transmission = 0.0f;        // KHR_materials_transmission: transmissionFactor (GltfPbr only)
 
   // The lobes a material uses (materials/features.h): each is compiled in only then.
-  unsigned features(bool specular_map = false, bool clearcoat_map = false, bool sheen_map = false) const {
+  unsigned features(bool specular_map = false) const {
     unsigned f = 0;
+    if (transmission > 0.0f) f |= feature_bit(MaterialFeature::GltfTransmission);
     if (specular != 1.0f || specularColor != glm::vec3(1.0f) || specular_map) f |= feature_bit(MaterialFeature::GltfSpecular);
-    if (clearcoat > 0.0f || clearcoat_map) f |= feature_bit(MaterialFeature::GltfClearcoat);
-    if (glm::any(glm::greaterThan(sheenColor, glm::vec3(0.0f))) || sheen_map) f |= feature_bit(MaterialFeature::GltfSheen);
+    if (clearcoat > 0.0f) f |= feature_bit(MaterialFeature::GltfClearcoat);
+    if (glm::any(glm::greaterThan(sheenColor, glm::vec3(0.0f)))) f |= feature_bit(MaterialFeature::GltfSheen);
     return f;
   }
   // The XML's attributes (MetallicRoughness, GltfPbr): specular="1" specularColor="1 1 1"

@@ -21,7 +21,8 @@
 // Extensions (docs/gltf.md): KHR_materials_specular (specularTexture A, specularColorTexture
 // RGB sRGB), _clearcoat (clearcoatTexture R, clearcoatRoughnessTexture G, its own
 // clearcoatNormalTexture; without it the coat has the surface's normal before the base's
-// normal map), _sheen (sheenColorTexture RGB sRGB, sheenRoughnessTexture A).
+// normal map), _sheen (sheenColorTexture RGB sRGB, sheenRoughnessTexture A),
+// _transmission thin-walled (transmission="t"; transmissionTexture R).
 #pragma once
 #include <string>
 
@@ -46,12 +47,12 @@ struct GltfPbr {
   bool doubleSided = false;
   GltfMap base, metal_rough, normal, emissive;  // emission's factor is MaterialCommon's
   GltfLobes lobes;  // the extensions' factors
-  GltfMap specular, specular_color, clearcoat, clearcoat_roughness, clearcoat_normal, sheen_color, sheen_roughness;
+  GltfMap specular, specular_color, clearcoat, clearcoat_roughness, clearcoat_normal, sheen_color, sheen_roughness, transmission;
   // The texinfo records of a material, from m * kTexinfosPerMaterial (gltf_pbr_resolve.glsl
   // reads them by these offsets); kFactors holds the colour factors (row0: specularColor,
   // row1: sheenColor), the scalar ones are their maps' `strength`.
   enum Texinfo : int { kBase, kMetalRough, kNormal, kEmissive, kSpecular, kSpecularColor, kClearcoat, kClearcoatRoughness,
-                       kClearcoatNormal, kSheenColor, kSheenRoughness, kFactors, kNumTexinfos };
+                       kClearcoatNormal, kSheenColor, kSheenRoughness, kFactors, kTransmission, kNumTexinfos };
   static_assert(kNumTexinfos <= kTexinfosPerMaterial);
 
   // Stored: the first texinfo record, the factors, f0, the alpha cutoff (< 0: BLEND) and
@@ -102,6 +103,7 @@ struct GltfPbr {
     alphaCutoff = unit(a.number("alphaCutoff", 0.5f), "alphaCutoff");
     doubleSided = a.boolean("doubleSided", false);
     lobes.parse(a);
+    lobes.transmission = unit(a.number("transmission", 0.0f), "transmission");
   }
   void pack(MaterialWriter& w) const {
     w.tint *= baseColor;
@@ -135,6 +137,7 @@ struct GltfPbr {
     b.set(first + kFactors, texinfo_rec::row0, lobes.specularColor);
     b.set(first + kFactors, texinfo_rec::row1, lobes.sheenColor);
     b.set(first + kFactors, texinfo_rec::code, -1.0f);
+    with(transmission, lobes.transmission).pack(b, first + kTransmission);
   }
   template <class E>
   bool edit(E& e, MaterialCommon&) {

@@ -36,6 +36,7 @@ struct MrLobes {
   vec3 coat_n;     // the coat's normal in the shading frame
   vec3 sheen;
   float sheen_roughness;
+  float transmission;  // thin-walled KHR_materials_transmission
 };
 
 MrLobes mr_lobes(MaterialRec m) {
@@ -69,6 +70,10 @@ MrLobes mr_lobes(MaterialRec m) {
   l.sheen = vec3(rg, br.x);
   l.sheen_roughness = gltf_sheen_roughness(br.y);
 #endif
+  l.transmission = 0.0;
+#ifdef HAS_GLTF_TRANSMISSION
+  l.transmission = q.transmission;
+#endif
   return l;
 }
 
@@ -76,7 +81,7 @@ bool mr_smooth(float roughness) { return roughness < 0.03; }
 
 bool delta_metallic_roughness(MaterialRec m) {
   MrLobes l = mr_lobes(m);
-  return mr_smooth(l.roughness) && l.metallic >= 1.0 && (l.coat <= 0.0 || mr_smooth(l.coat_roughness)) && max3(l.sheen) <= 0.0;
+  return mr_smooth(l.roughness) && (l.metallic >= 1.0 || l.transmission >= 1.0) && (l.coat <= 0.0 || mr_smooth(l.coat_roughness)) && max3(l.sheen) <= 0.0;
 }
 vec3 albedo_metallic_roughness(MaterialRec m) { return m.tint; }
 
@@ -109,20 +114,27 @@ float mr_sheen_scale(MrLobes l, float cos_o, float cos_i) {
 }
 
 // The lobe choice at wo: x = p_c (the coat), y = p_s (the base's specular lobe, of what
-// the coat leaves); the rest is the cosine-weighted hemisphere.
-vec2 mr_probabilities(MaterialRec m, MrLobes l, vec3 wo) {
+// the coat leaves), z = p_t (the transmission, of what the specular lobe leaves); the
+// rest is the cosine-weighted hemisphere.
+vec3 mr_probabilities(MaterialRec m, MrLobes l, vec3 wo) {
   float ws = l.metallic * luminance(mr_fresnel_metal(m, wo.z)) + (1.0 - l.metallic) * max3(mr_fresnel_layer(l, wo.z));
   float wd = (1.0 - l.metallic) * (1.0 - max3(mr_fresnel_layer(l, wo.z))) * luminance(m.tint);
-  float wc = mr_coat_weight(l, wo);
+  float wc = mr_coat_weight(l, wo), wt = 0.0;
+#ifdef HAS_GLTF_TRANSMISSION
+  wt = wd * l.transmission;
+  wd -= wt;
+#endif
 #ifdef HAS_GLTF_SHEEN
   float e = max3(l.sheen) * gltf_sheen_albedo(wo.z, l.sheen_roughness);
   float keep = max(0.0, 1.0 - e);
   ws *= keep;
+  wt *= keep;
   wd = wd * keep + e;
 #endif
-  float ps = wd <= 0.0 ? 1.0 : clamp(ws / (ws + wd), 0.1, 0.9);  // no cosine-sampled light: all specular
-  float pc = l.coat <= 0.0 ? 0.0 : clamp(wc / (wc + (1.0 - wc) * (ws + wd)), 0.1, 0.9);
-  return vec2(pc, ps);
+  float ps = wd + wt <= 0.0 ? 1.0 : clamp(ws / (ws + wd + wt), 0.1, 0.9);  // no cosine-sampled light: all specular
+  float pt = wt <= 0.0 ? 0.0 : wd <= 0.0 ? 1.0 : clamp(wt / (wt + wd), 0.1, 0.9);
+  float pc = l.coat <= 0.0 ? 0.0 : clamp(wc / (wc + (1.0 - wc) * (ws + wd + wt)), 0.1, 0.9);
+  return vec3(pc, ps, pt);
 }
 
 // The smooth base lobe's reflectance at incidence cos_o (a mirror: h = n).
@@ -130,16 +142,43 @@ vec3 mr_mirror_fresnel(MaterialRec m, MrLobes l, float cos_o) {
   return (1.0 - l.metallic) * mr_fresnel_layer(l, cos_o) + l.metallic * mr_fresnel_metal(m, cos_o);
 }
 
+#ifdef HAS_GLTF_TRANSMISSION
+// The thin-walled transmission (wi below the surface): the GGX lobe of wi mirrored through
+// the surface, wr = (wi.x, wi.y, -wi.z), tinted by the base colour and weighted by what the
+// layers over it leave: (1 - metallic) transmission (1 - specular max(F(v.h))) tint D G2 / (4 n.v).
+vec3 mr_eval_transmission(MaterialRec m, MrLobes l, vec3 wo, vec3 wi, out float pdf) {
+  pdf = 0.0;
+  if (l.transmission <= 0.0 || mr_smooth(l.roughness)) return vec3(0.0);
+  vec3 p = mr_probabilities(m, l, wo);
+  vec3 wr = vec3(wi.xy, -wi.z);
+  vec3 h = normalize(wo + wr);
+  float alpha = l.roughness * l.roughness, a2 = alpha * alpha;
+  vec3 f = (1.0 - l.metallic) * l.transmission * (1.0 - max3(mr_fresnel_layer(l, dot(wo, h)))) * m.tint *
+           (ggx_d(h.z, a2) * ggx_g2(wo.z, wr.z, a2) / (4.0 * wo.z));
+  f *= mr_sheen_scale(l, wo.z, wr.z) * (1.0 - mr_coat_weight(l, wo));
+  pdf = (1.0 - p.x) * (1.0 - p.y) * p.z * pdf_ggx_vndf(wo, h, a2);
+  return f;
+}
+#endif
+
 vec3 eval_metallic_roughness(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;
-  if (wi.z <= 0.0 || wo.z <= 0.0) return vec3(0.0);
+  if (wo.z <= 0.0) return vec3(0.0);
   MrLobes l = mr_lobes(m);
+#ifdef HAS_GLTF_TRANSMISSION
+  if (wi.z < 0.0) return mr_eval_transmission(m, l, wo, wi, pdf);
+#endif
+  if (wi.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(wo + wi);
   float vh = dot(wo, h);
   vec3 fd = mr_fresnel_layer(l, vh);
-  vec2 p = mr_probabilities(m, l, wo);
+  vec3 p = mr_probabilities(m, l, wo);
   vec3 f = (1.0 - l.metallic) * (1.0 - max3(fd)) * m.tint * (INV_PI * wi.z);
   float pdf_base = (1.0 - p.y) * pdf_cosine_hemisphere(wi);
+#ifdef HAS_GLTF_TRANSMISSION
+  f *= 1.0 - l.transmission;
+  pdf_base *= 1.0 - p.z;
+#endif
   if (!mr_smooth(l.roughness)) {
     float alpha = l.roughness * l.roughness, a2 = alpha * alpha;
     vec3 fresnel = (1.0 - l.metallic) * fd + l.metallic * mr_fresnel_metal(m, vh);
@@ -167,7 +206,7 @@ vec3 eval_metallic_roughness(MaterialRec m, vec3 wo, vec3 wi, bool entering, out
 bool sample_metallic_roughness(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {
   if (wo.z <= 0.0) return false;
   MrLobes l = mr_lobes(m);
-  vec2 p = mr_probabilities(m, l, wo);
+  vec3 p = mr_probabilities(m, l, wo);
   float uz = u.z;
   s.delta = false;
 #ifdef HAS_GLTF_CLEARCOAT
@@ -198,7 +237,28 @@ bool sample_metallic_roughness(MaterialRec m, vec3 wo, bool entering, vec3 u, ou
     s.delta = true;
     return true;
   }
+#ifdef HAS_GLTF_TRANSMISSION
+  if (!specular && (uz - p.y) / (1.0 - p.y) < p.z) {  // the thin-walled transmission
+    if (mr_smooth(l.roughness)) {  // straight through
+      s.wi = -wo;
+      s.weight = (1.0 - l.metallic) * l.transmission * (1.0 - max3(mr_fresnel_layer(l, wo.z))) * m.tint *
+                 ((1.0 - mr_coat_weight(l, wo)) * mr_sheen_scale(l, wo.z, wo.z) / ((1.0 - p.x) * (1.0 - p.y) * p.z));
+      s.pdf = 0.0;
+      s.delta = true;
+      return true;
+    }
+    vec3 wr = reflect(-wo, sample_ggx_vndf(wo, l.roughness * l.roughness, u.xy));
+    if (wr.z <= 0.0) return false;
+    s.wi = vec3(wr.xy, -wr.z);
+    vec3 f = eval_metallic_roughness(m, wo, s.wi, entering, s.pdf);
+    s.weight = s.pdf > 0.0 ? f / s.pdf : vec3(0.0);
+    return s.pdf > 0.0;
+  }
+#endif
   s.wi = specular ? reflect(-wo, sample_ggx_vndf(wo, l.roughness * l.roughness, u.xy)) : sample_cosine_hemisphere(u.xy);
+#ifdef HAS_GLTF_TRANSMISSION
+  if (s.wi.z <= 0.0) return false;  // a reflection below the horizon (not the transmission's)
+#endif
   vec3 f = eval_metallic_roughness(m, wo, s.wi, entering, s.pdf);
   s.weight = s.pdf > 0.0 ? f / s.pdf : vec3(0.0);
   return s.pdf > 0.0;

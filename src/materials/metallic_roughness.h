@@ -30,10 +30,11 @@ struct MetallicRoughness {
   // f0: the dielectric's F0 colour; specular: its weight (F90); coat: clearcoat and its
   // roughness; sheen_rg, sheen_br: the sheen colour and roughness (two per slot:
   // gltf_pack2). Hit field coat_normal: the clearcoat's normal in the shading frame
-  // (packed; 0: the shading normal), which GltfPbr sets from its maps.
+  // (packed; 0: the shading normal), which GltfPbr sets from its maps; transmission: the
+  // thin-walled KHR_materials_transmission (GltfPbr's; a uniform MetallicRoughness has none).
 #define PT_METALLIC_ROUGHNESS_FIELDS(F) \
   F(float, metallic) F(float, roughness) F(vec3, f0) F(float, specular) F(float, coat) F(float, sheen_rg) F(float, sheen_br)
-#define PT_METALLIC_ROUGHNESS_HIT_FIELDS(F) F(float, coat_normal)
+#define PT_METALLIC_ROUGHNESS_HIT_FIELDS(F) F(float, coat_normal) F(float, transmission)
   PT_KIND_RECORD(PT_METALLIC_ROUGHNESS_FIELDS, PT_METALLIC_ROUGHNESS_HIT_FIELDS)
 
   unsigned features() const { return lobes.features(); }

@@ -153,6 +153,12 @@ void Materials::read_lobes(const tinygltf::ExtensionMap& ext, const std::string&
     g.clearcoat_normal_map = map(*v, "clearcoatNormalTexture", xat, &scale);
     g.clearcoat_normal_map.strength = scale;
   }
+  if (const tinygltf::Value* v = find("KHR_materials_transmission"))
+    g.transmission_map = map(*v, "transmissionTexture", at + "/extensions/KHR_materials_transmission");
+  // KHR_materials_volume: a volume (not a thin wall) where thicknessFactor > 0 (the
+  // extension's rule); its BSDF is not implemented (docs/gltf.md).
+  if (const tinygltf::Value* v = find("KHR_materials_volume"))
+    g.volume = number(*v, "thicknessFactor", 0.0f, 1e6f, at + "/extensions/KHR_materials_volume") > 0.0f;
   if (const tinygltf::Value* v = find("KHR_materials_sheen")) {
     const std::string xat = at + "/extensions/KHR_materials_sheen";
     g.sheen_color = color(*v, "sheenColorFactor", glm::vec3(0.0f), 1.0f, xat);
