@@ -190,3 +190,26 @@ TEST_CASE("MetallicRoughness: furnace sweep metallic x roughness never above 1 (
     std::printf("\n");
   }
 }
+
+TEST_CASE("glTF: the extensions' maps (clearcoat R, specular A, sheen colour RGB) read per texel", "[gpu][gltf]") {
+  test_gl();
+  // Black quads without dielectric specular, seen head-on (cos ~0.99) under a sky of 1:
+  // the map's white left half shows only its lobe, the black right half nothing.
+  // A smooth clearcoat of 1 and a smooth specular layer reflect Schlick's F(f0 = 0.04) =
+  // 0.04 there; the sheen returns its albedo E(mu, 0.5) (the build-time table).
+  for (const char* file : {"test-clearcoat-map.gltf", "test-specular-map.gltf"}) {
+    const RenderResult r = view(file, 1.0);
+    INFO(file << ": left " << at(r, -0.5, 0.0) << " right " << at(r, 0.5, 0.0));
+    CHECK(at(r, -0.5, 0.0) == Approx(0.04).margin(0.002));
+    CHECK(at(r, 0.5, 0.0) < 1e-4);
+  }
+  Features f = all_features();
+  f.material_features |= feature_bit(MaterialFeature::GltfSheen);
+  GlslKernel k("vec4 kernel(vec4 x, int i) { return vec4(gltf_sheen_albedo(3.0 / sqrt(9.25), gltf_sheen_roughness(0.5))); }\n", f);
+  const double e = k.run(1)[0].x;
+  const RenderResult r = view("test-sheen-map.gltf", 1.0, false, 256);
+  INFO("sheen: left " << at(r, -0.5, 0.0) << " (table " << e << ") right " << at(r, 0.5, 0.0));
+  CHECK(e > 0.01);
+  CHECK(at(r, -0.5, 0.0) == Approx(e).epsilon(0.05));
+  CHECK(at(r, 0.5, 0.0) < 1e-4);
+}

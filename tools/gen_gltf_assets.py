@@ -6,8 +6,13 @@ with one .bin buffer and PNG images, with nothing but the Python 3 standard libr
 
 Showcase (scenes/gltf/ shows them): mr-grid (5 x 5 spheres, metallic across, roughness
 down), dielectric-grid (5 spheres, roughness 0..1, ior 1.5 through KHR_materials_ior),
-maps-quad (base colour and normal maps), emissive (emissive strength 1, 4, 16).
-Tests (tests/gltf_materials_test.cpp): test-*.gltf, quads z = 0 over [-1, 1]^2 facing +z.
+maps-quad (base colour and normal maps), emissive (emissive strength 1, 4, 16),
+clearcoat (KHR_materials_clearcoat over a red base: factor 0..1, then coat roughness 0..1),
+sheen (KHR_materials_sheen on a draped cloth and spheres of sheen roughness 0.2..1),
+specular (KHR_materials_specular: specularFactor 0..1, specularColor), transmission
+(thin-walled KHR_materials_transmission: clear, frosted, amber spheres).
+Tests (tests/gltf_materials_test.cpp, tests/gltf_lobes_test.cpp): test-*.gltf, quads z = 0
+over [-1, 1]^2 facing +z.
 """
 import json
 import math
@@ -182,6 +187,63 @@ def showcase():
     g.write()
 
 
+def cloth(size=1.6, n=48, folds=3, depth=0.12):
+    """A draped sheet: the quad y = h(x, z) over [-size, size]^2 with folds along x, facing +y."""
+    p, nn, uv, idx = [], [], [], []
+    for i in range(n + 1):
+        for j in range(n + 1):
+            x, z = size * (2 * j / n - 1), size * (2 * i / n - 1)
+            k = folds * math.pi / size
+            h = depth * math.sin(k * x) * (0.6 + 0.4 * math.cos(0.5 * k * z))
+            dx = depth * k * math.cos(k * x) * (0.6 + 0.4 * math.cos(0.5 * k * z))
+            dz = -depth * math.sin(k * x) * 0.4 * 0.5 * k * math.sin(0.5 * k * z)
+            l = math.sqrt(dx * dx + 1 + dz * dz)
+            p.append((x, h, z))
+            nn.append((-dx / l, 1 / l, -dz / l))
+            uv.append((j / n, i / n))
+    for i in range(n):
+        for j in range(n):
+            a, b = i * (n + 1) + j, (i + 1) * (n + 1) + j
+            idx += [a, b, a + 1, a + 1, b, b + 1]
+    return p, nn, uv, idx
+
+
+def lobes():
+    s = sphere(0.4)
+    g = Gltf("clearcoat")  # a red base; front row clearcoat 0..1 (smooth), back row clearcoat 1 of roughness 0..1
+    for row, (label, values) in enumerate((("factor", [(i / 4, 0.0) for i in range(5)]), ("roughness", [(1.0, i / 4) for i in range(5)]))):
+        for i, (cc, ccr) in enumerate(values):
+            m = g.material({"name": "cc-%s-%d" % (label, i), "pbrMetallicRoughness": {"baseColorFactor": [0.7, 0.04, 0.03, 1],
+                            "metallicFactor": 0, "roughnessFactor": 0.6},
+                            "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": cc, "clearcoatRoughnessFactor": ccr}}})
+            g.node(g.mesh(*s, m), (1.0 * (i - 2), 0.4, -1.1 * row))
+    g.write()
+    g = Gltf("sheen")  # a dark blue cloth with a pink sheen, and spheres of sheen roughness 0.2 .. 1
+    m = g.material({"name": "velvet", "doubleSided": True, "pbrMetallicRoughness": {"baseColorFactor": [0.03, 0.03, 0.12, 1],
+                    "metallicFactor": 0, "roughnessFactor": 0.9},
+                    "extensions": {"KHR_materials_sheen": {"sheenColorFactor": [0.95, 0.55, 0.75], "sheenRoughnessFactor": 0.45}}})
+    g.node(g.mesh(*cloth(), m), (0, 0.2, 0))
+    for i in range(5):
+        m = g.material({"name": "sheen-r%d" % i, "pbrMetallicRoughness": {"baseColorFactor": [0.03, 0.03, 0.12, 1],
+                        "metallicFactor": 0, "roughnessFactor": 0.9},
+                        "extensions": {"KHR_materials_sheen": {"sheenColorFactor": [0.95, 0.55, 0.75], "sheenRoughnessFactor": 0.2 + 0.2 * i}}})
+        g.node(g.mesh(*sphere(0.3), m), (0.75 * (i - 2), 0.75, 1.2))
+    g.write()
+    g = Gltf("transmission")  # thin-walled KHR_materials_transmission: clear, frosted (roughness 0.3), tinted amber
+    for i, (rough, color) in enumerate(((0.0, [1, 1, 1, 1]), (0.3, [1, 1, 1, 1]), (0.0, [1.0, 0.6, 0.2, 1]))):
+        m = g.material({"name": "thin-%d" % i, "doubleSided": True, "pbrMetallicRoughness": {"baseColorFactor": color, "metallicFactor": 0,
+                        "roughnessFactor": rough}, "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
+        g.node(g.mesh(*sphere(0.5), m), (1.2 * (i - 1), 0.5, 0))
+    g.write()
+    g = Gltf("specular")  # a grey dielectric of roughness 0.3: specularFactor 0..1; last: specularColor orange
+    for i in range(6):
+        ext = {"specularFactor": min(1.0, i / 4)} if i < 5 else {"specularColorFactor": [2.0, 1.0, 0.3]}
+        m = g.material({"name": "spec-%d" % i, "pbrMetallicRoughness": {"baseColorFactor": [0.25, 0.25, 0.25, 1],
+                        "metallicFactor": 0, "roughnessFactor": 0.3}, "extensions": {"KHR_materials_specular": ext}})
+        g.node(g.mesh(*s, m), (1.0 * (i - 2.5), 0.4, 0))
+    g.write()
+
+
 def tests():
     W, K = (255, 255, 255), (0, 0, 0)
     # Checker: white metal (mr (0, 0, 255): roughness 0, metallic 1) beside black dielectric;
@@ -224,6 +286,24 @@ def tests():
                                                          "metallicFactor": 1, "roughnessFactor": 0}))
         g.node(g.mesh(*quad(), m))
         g.write()
+    # The extensions' maps on a black base with no dielectric specular (specularFactor 0):
+    # a smooth clearcoat whose clearcoatTexture (R) is 1 | 0, left | right; a specular
+    # layer whose specularTexture (A) is 1 | 0 (and specularColorTexture white); a sheen
+    # whose sheenColorTexture is white | black.
+    for name, ext in (("test-clearcoat-map", lambda g: {"KHR_materials_specular": {"specularFactor": 0},
+                                                        "KHR_materials_clearcoat": {"clearcoatFactor": 1, "clearcoatRoughnessFactor": 0,
+                                                            "clearcoatTexture": g.texture("test-clearcoat-map.png", [[W, K]])}}),
+                      ("test-specular-map", lambda g: {"KHR_materials_specular": {
+                          "specularTexture": g.texture("test-specular-map.png", [[(0, 0, 0, 255), (0, 0, 0, 0)]], channels=4),
+                          "specularColorTexture": g.texture("test-specular-color.png", [[W, W]])}}),
+                      ("test-sheen-map", lambda g: {"KHR_materials_specular": {"specularFactor": 0},
+                                                    "KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1], "sheenRoughnessFactor": 0.5,
+                                                        "sheenColorTexture": g.texture("test-sheen-map.png", [[W, K]])}})):
+        g = Gltf(name)
+        m = g.material({"doubleSided": True, "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0,
+                        "roughnessFactor": 0}, "extensions": ext(g)})
+        g.node(g.mesh(*quad(), m))
+        g.write()
 
 
 def punctual_lights():
@@ -264,5 +344,6 @@ def punctual_lights():
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     showcase()
+    lobes()
     tests()
     punctual_lights()

@@ -19,9 +19,10 @@
 namespace pt {
 
 // Texinfo records per material (a kind with maps writes its own over them: GltfPbr's
-// base colour, metallic-roughness, normal and emissive maps), so material m's are at
+// base colour, metallic-roughness, normal and emissive maps, its extensions' maps and a
+// record of their colour factors: materials/gltf_pbr.h), so material m's are at
 // m * kTexinfosPerMaterial.
-inline constexpr int kTexinfosPerMaterial = 4;
+inline constexpr int kTexinfosPerMaterial = 13;
 
 namespace texinfo_rec {
 inline constexpr int kTexels = 2;
@@ -47,7 +48,7 @@ struct GltfMap {
   // KHR_texture_transform, in glTF's uv (v down): uv' = T(offset) R(rotation) S(scale) uv.
   glm::vec2 offset{0.0f}, scale{1.0f};
   float rotation = 0.0f;
-  float strength = 1.0f;  // normalTexture.scale
+  float strength = 1.0f;  // normalTexture.scale; an extension's scalar factor (gltf_pbr.h)
 
   // The transform in our uv (v up, v_ours = 1 - v_gltf): flip, transform, flip back.
   void rows(glm::vec3& r0, glm::vec3& r1) const {

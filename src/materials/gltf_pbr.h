@@ -15,10 +15,18 @@
 // <GltfPbr baseColor="r g b" alpha="a" metallic="m" roughness="r" ior="1.5"
 //  emissive="r g b" baseColorMap="c.png" metallicRoughnessMap="mr.png" normalMap="n.png"
 //  normalScale="1" emissiveMap="e.png" alphaMode="OPAQUE|MASK|BLEND" alphaCutoff="0.5"
-//  doubleSided="true|false"/> with TEXCOORD_0's maps, repeat and linear filtering.
+//  doubleSided="true|false"/> with TEXCOORD_0's maps, repeat and linear filtering, and the
+// extension lobes' factors (materials/gltf_lobes.h: specular, specularColor, clearcoat,
+// clearcoatRoughness, sheenColor, sheenRoughness; their maps come from glTF files only).
+// Extensions (docs/gltf.md): KHR_materials_specular (specularTexture A, specularColorTexture
+// RGB sRGB), _clearcoat (clearcoatTexture R, clearcoatRoughnessTexture G, its own
+// clearcoatNormalTexture; without it the coat has the surface's normal before the base's
+// normal map), _sheen (sheenColorTexture RGB sRGB, sheenRoughnessTexture A),
+// _transmission thin-walled (transmission="t"; transmissionTexture R).
 #pragma once
 #include <string>
 
+#include "materials/gltf_lobes.h"
 #include "materials/gltf_map.h"
 #include "materials/material.h"
 
@@ -38,6 +46,14 @@ struct GltfPbr {
   float alphaCutoff = 0.5f;
   bool doubleSided = false;
   GltfMap base, metal_rough, normal, emissive;  // emission's factor is MaterialCommon's
+  GltfLobes lobes;  // the extensions' factors
+  GltfMap specular, specular_color, clearcoat, clearcoat_roughness, clearcoat_normal, sheen_color, sheen_roughness, transmission;
+  // The texinfo records of a material, from m * kTexinfosPerMaterial (gltf_pbr_resolve.glsl
+  // reads them by these offsets); kFactors holds the colour factors (row0: specularColor,
+  // row1: sheenColor), the scalar ones are their maps' `strength`.
+  enum Texinfo : int { kBase, kMetalRough, kNormal, kEmissive, kSpecular, kSpecularColor, kClearcoat, kClearcoatRoughness,
+                       kClearcoatNormal, kSheenColor, kSheenRoughness, kFactors, kTransmission, kNumTexinfos };
+  static_assert(kNumTexinfos <= kTexinfosPerMaterial);
 
   // Stored: the first texinfo record, the factors, f0, the alpha cutoff (< 0: BLEND) and
   // sidedness; at the hit it becomes a MetallicRoughness record (gltf_pbr.glsl).
@@ -52,7 +68,8 @@ struct GltfPbr {
 
   unsigned features() const {
     return (alphaMode != kOpaque || !doubleSided ? feature_bit(MaterialFeature::HitCuts) : 0u) |
-           (emissive.image >= 0 ? feature_bit(MaterialFeature::EmissionMaps) : 0u);
+           (emissive.image >= 0 ? feature_bit(MaterialFeature::EmissionMaps) : 0u) |
+           lobes.features(specular.image >= 0 || specular_color.image >= 0);
   }
 
   void parse(MaterialParse& p) {
@@ -85,6 +102,8 @@ struct GltfPbr {
     else a.fail("'alphaMode' must be OPAQUE, MASK or BLEND");
     alphaCutoff = unit(a.number("alphaCutoff", 0.5f), "alphaCutoff");
     doubleSided = a.boolean("doubleSided", false);
+    lobes.parse(a);
+    lobes.transmission = unit(a.number("transmission", 0.0f), "transmission");
   }
   void pack(MaterialWriter& w) const {
     w.tint *= baseColor;
@@ -100,10 +119,25 @@ struct GltfPbr {
   }
   // Its texinfo records: material m's are from m * kTexinfosPerMaterial (render/image_maps.h).
   void pack_texinfos(RecordBuffer& b, int first) const {
-    base.pack(b, first);
-    metal_rough.pack(b, first + 1);
-    normal.pack(b, first + 2);
-    emissive.pack(b, first + 3);
+    base.pack(b, first + kBase);
+    metal_rough.pack(b, first + kMetalRough);
+    normal.pack(b, first + kNormal);
+    emissive.pack(b, first + kEmissive);
+    auto with = [](GltfMap m, float factor) {
+      m.strength = factor;
+      return m;
+    };
+    with(specular, lobes.specular).pack(b, first + kSpecular);
+    specular_color.pack(b, first + kSpecularColor);
+    with(clearcoat, lobes.clearcoat).pack(b, first + kClearcoat);
+    with(clearcoat_roughness, lobes.clearcoatRoughness).pack(b, first + kClearcoatRoughness);
+    clearcoat_normal.pack(b, first + kClearcoatNormal);
+    sheen_color.pack(b, first + kSheenColor);
+    with(sheen_roughness, lobes.sheenRoughness).pack(b, first + kSheenRoughness);
+    b.set(first + kFactors, texinfo_rec::row0, lobes.specularColor);
+    b.set(first + kFactors, texinfo_rec::row1, lobes.sheenColor);
+    b.set(first + kFactors, texinfo_rec::code, -1.0f);
+    with(transmission, lobes.transmission).pack(b, first + kTransmission);
   }
   template <class E>
   bool edit(E& e, MaterialCommon&) {

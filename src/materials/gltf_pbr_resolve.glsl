@@ -26,15 +26,31 @@ vec3 gltf_normal(int rec, GltfUv g, vec3 n_out, vec4 tangent) {
   return dot(d, d) == 0.0 ? n_out : normalize(d + max(nt.z, 1e-3) * n_out);
 }
 
+// The clearcoat's normal (KHR_materials_clearcoat) in the shading frame fr, packed for the
+// MetallicRoughness record (metallic_roughness.glsl mr_lobes): 0 when it is fr's own, else
+// (x, y) + 1 on 2047 steps per unit, plus 1. n_base: the surface's normal on the ray's side
+// before the base's normal map (the coat's when it has no map of its own).
+float gltf_coat_normal(int rec, GltfUv g, Surface sf, vec3 n_base, Hit h, vec4 tangent) {
+  vec3 nc = n_base;
+  if (load_texinfo(rec).code >= 0.0) {
+    vec3 n_out = dot(n_base, h.n) < 0.0 ? -n_base : n_base;
+    nc = gltf_normal(rec, g, n_out, tangent);
+    if (dot(sf.n, h.n) < 0.0) nc = -nc;
+  }
+  vec3 c = to_local(sf.fr, nc);
+  if (c.z <= 0.0 || c.z >= 1.0 - 1e-7) return 0.0;
+  return 1.0 + gltf_pack2((c.xy + 1.0) * (2047.0 / 4095.0));
+}
+
 // The surface step's hook (kResolvesAtHit).
 void resolve_hit_gltf_pbr(inout Surface sf, Ray r, Hit h) {
   GltfPbrRec q = gltf_pbr_rec(sf.m);
   vec4 tangent;
   GltfUv g = gltf_uvs(sf.s, h, tangent);
+  vec3 n_base = sf.fr.n;  // the shading normal so far (a mesh's interpolated one), on the ray's side
   if (load_texinfo(q.maps + 2).code >= 0.0) {
     vec3 wo = -r.d;
-    vec3 base = sf.fr.n;  // the shading normal so far (a mesh's interpolated one), on the ray's side
-    vec3 n_out = dot(base, h.n) < 0.0 ? -base : base;
+    vec3 n_out = dot(n_base, h.n) < 0.0 ? -n_base : n_base;
     vec3 ns = gltf_normal(q.maps + 2, g, n_out, tangent);
     if (dot(sf.n, h.n) < 0.0) ns = -ns;  // the back side sees the same relief from below
     // As textured_resolve.glsl: a normal facing away from the viewer is bent towards it.
@@ -49,7 +65,29 @@ void resolve_hit_gltf_pbr(inout Surface sf, Ray r, Hit h) {
   MaterialRec m = sf.m;
   m.kind = MAT_METALLIC_ROUGHNESS;
   m.tint = base_color.rgb;
-  sf.m = with_metallic_roughness_rec(m, MetallicRoughnessRec(q.metallic * mr.b, q.roughness * mr.g, q.f0));
+  // The extensions' values here (materials/gltf_pbr.h: the records from q.maps on).
+  TexinfoRec factors = load_texinfo(q.maps + 11);
+  vec3 f0 = vec3(q.f0);
+  float specular = 1.0, coat = 0.0, sheen_br = 0.0, sheen_rg = 0.0, coat_normal = 0.0, transmission = 0.0;
+#ifdef HAS_GLTF_SPECULAR
+  specular = load_texinfo(q.maps + 4).strength * gltf_map(q.maps + 4, g, vec4(1.0)).a;
+  f0 = min(q.f0 * factors.row0 * gltf_map(q.maps + 5, g, vec4(1.0)).rgb, vec3(1.0));
+#endif
+#ifdef HAS_GLTF_CLEARCOAT
+  coat = gltf_pack2(vec2(load_texinfo(q.maps + 6).strength * gltf_map(q.maps + 6, g, vec4(1.0)).r,
+                         load_texinfo(q.maps + 7).strength * gltf_map(q.maps + 7, g, vec4(1.0)).g));
+  coat_normal = gltf_coat_normal(q.maps + 8, g, sf, n_base, h, tangent);
+#endif
+#ifdef HAS_GLTF_SHEEN
+  vec3 sheen = factors.row1 * gltf_map(q.maps + 9, g, vec4(1.0)).rgb;
+  sheen_rg = gltf_pack2(sheen.rg);
+  sheen_br = gltf_pack2(vec2(sheen.b, load_texinfo(q.maps + 10).strength * gltf_map(q.maps + 10, g, vec4(1.0)).a));
+#endif
+#ifdef HAS_GLTF_TRANSMISSION
+  transmission = load_texinfo(q.maps + 12).strength * gltf_map(q.maps + 12, g, vec4(1.0)).r;
+#endif
+  sf.m = with_metallic_roughness_rec(
+      m, MetallicRoughnessRec(q.metallic * mr.b, q.roughness * mr.g, f0, specular, coat, sheen_rg, sheen_br, coat_normal, transmission));
 }
 
 // The surface step's emission hook (kEmissionAtHit): a double-sided material emits from

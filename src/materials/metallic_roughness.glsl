@@ -1,18 +1,87 @@
 // MetallicRoughness: the glTF 2.0 metallic-roughness BSDF (Appendix B; the model and the
-// XML: metallic_roughness.h). With s5 = (1 - v.h)^5, F_d = f0 + (1 - f0) s5 (dielectric)
-// and F_m = tint + (1 - tint) s5 (metal, f0 = the base colour):
-//     f = (1 - metallic) [(1 - F_d) tint / pi + F_d f_s] + metallic F_m f_s,
+// XML: metallic_roughness.h) with its extension lobes (materials/gltf_lobes.h). With
+// s5 = (1 - v.h)^5, the dielectric's F_d = F0 + (1 - F0) s5 (F0 a colour under
+// KHR_materials_specular, weight w = specular) and the metal's F_m = tint + (1 - tint) s5:
+//     f_base = (1 - metallic) [(1 - w max(F_d)) tint / pi + w F_d f_s] + metallic F_m f_s,
 //     f_s = D G2 / (4 |n.l| |n.v|)   (GGX, height-correlated Smith: ggx.glsl)
-// Sampling picks the specular lobe (GGX visible normals, Heitz 2018) with probability p_s
-// from the lobes' Fresnel-weighted albedos at wo (clamped to [0.1, 0.9] when both lobes
-// carry light, so neither is starved), else the cosine-weighted diffuse lobe; the pdf is
-// the mixture's (one-sample MIS, as pbrt's BSDFs do). Below roughness 0.03 the specular
-// lobe is a mirror chosen with p_s, weight F / p_s; the material is a delta one only when
-// it is also fully metallic.
+// then the sheen over it (gltf_sheen.glsl) and the clearcoat over that (gltf_clearcoat.glsl),
+// each compiled in only when a material of the scene uses it (HAS_GLTF_*).
+// Sampling picks the clearcoat with probability p_c (its Fresnel-weighted share at wo,
+// clamped to [0.1, 0.9]), else the base's specular lobe (GGX visible normals, Heitz 2018)
+// with probability p_s from the lobes' Fresnel-weighted albedos at wo (clamped to
+// [0.1, 0.9] when both carry light), else the cosine-weighted hemisphere (the diffuse and
+// sheen lobes); the pdf is the mixture's (one-sample MIS, as pbrt's BSDFs do). Below
+// roughness 0.03 a specular lobe is a mirror chosen with its probability, weight F / p;
+// the material is a delta one only when every lobe it has is.
 #include "ggx.glsl"
-bool delta_metallic_roughness(MaterialRec m) {
+
+// Two unit numbers of one slot (materials/gltf_lobes.h gltf_pack2: 12 bits each).
+vec2 gltf_unpack2(float v) {
+  float hi = floor(v * (1.0 / 4096.0));
+  return vec2(v - hi * 4096.0, hi) * (1.0 / 4095.0);
+}
+float gltf_pack2(vec2 a) {
+  vec2 q = floor(clamp(a, 0.0, 1.0) * 4095.0 + 0.5);
+  return q.x + 4096.0 * q.y;
+}
+
+// The record's lobes, decoded; the lobes a program lacks are absent (zero).
+struct MrLobes {
+  float metallic;
+  float roughness;
+  vec3 f0;         // the dielectric's F0 (colour)
+  float specular;  // its weight
+  float coat;
+  float coat_roughness;
+  vec3 coat_n;     // the coat's normal in the shading frame
+  vec3 sheen;
+  float sheen_roughness;
+  float transmission;  // thin-walled KHR_materials_transmission
+};
+
+MrLobes mr_lobes(MaterialRec m) {
   MetallicRoughnessRec q = metallic_roughness_rec(m);
-  return q.roughness < 0.03 && q.metallic >= 1.0;
+  MrLobes l;
+  l.metallic = q.metallic;
+  l.roughness = q.roughness;
+#ifdef HAS_GLTF_SPECULAR
+  l.f0 = q.f0;
+  l.specular = q.specular;
+#else
+  l.f0 = vec3(q.f0.x);
+  l.specular = 1.0;
+#endif
+  l.coat = 0.0;
+  l.coat_roughness = 0.0;
+  l.coat_n = vec3(0.0, 0.0, 1.0);
+#ifdef HAS_GLTF_CLEARCOAT
+  vec2 c = gltf_unpack2(q.coat);
+  l.coat = c.x;
+  l.coat_roughness = c.y;
+  if (q.coat_normal > 0.0) {  // packed (x, y) + 1 on 2047 steps per unit (gltf_pbr_resolve.glsl)
+    vec2 xy = gltf_unpack2(q.coat_normal - 1.0) * (4095.0 / 2047.0) - 1.0;
+    l.coat_n = normalize(vec3(xy, sqrt(max(1e-6, 1.0 - dot(xy, xy)))));
+  }
+#endif
+  l.sheen = vec3(0.0);
+  l.sheen_roughness = 1.0;
+#ifdef HAS_GLTF_SHEEN
+  vec2 rg = gltf_unpack2(q.sheen_rg), br = gltf_unpack2(q.sheen_br);
+  l.sheen = vec3(rg, br.x);
+  l.sheen_roughness = gltf_sheen_roughness(br.y);
+#endif
+  l.transmission = 0.0;
+#ifdef HAS_GLTF_TRANSMISSION
+  l.transmission = q.transmission;
+#endif
+  return l;
+}
+
+bool mr_smooth(float roughness) { return roughness < 0.03; }
+
+bool delta_metallic_roughness(MaterialRec m) {
+  MrLobes l = mr_lobes(m);
+  return mr_smooth(l.roughness) && (l.metallic >= 1.0 || l.transmission >= 1.0) && (l.coat <= 0.0 || mr_smooth(l.coat_roughness)) && max3(l.sheen) <= 0.0;
 }
 vec3 albedo_metallic_roughness(MaterialRec m) { return m.tint; }
 
@@ -21,54 +90,175 @@ float mr_schlick5(float c) {
   return s2 * s2 * s;
 }
 
-float mr_specular_probability(MaterialRec m, MetallicRoughnessRec q, float cos_o) {
-  float s5 = mr_schlick5(cos_o);
-  float fd = q.f0 + (1.0 - q.f0) * s5;
-  float ws = q.metallic * luminance(m.tint + (1.0 - m.tint) * s5) + (1.0 - q.metallic) * fd;
-  float wd = (1.0 - q.metallic) * (1.0 - fd) * luminance(m.tint);
-  if (wd <= 0.0) return 1.0;  // no diffuse light: all specular
-  return clamp(ws / (ws + wd), 0.1, 0.9);
+// The base's reflectance at v.h = c: its dielectric layer (weight included) and its metal.
+vec3 mr_fresnel_layer(MrLobes l, float c) { return l.specular * (l.f0 + (1.0 - l.f0) * mr_schlick5(c)); }
+vec3 mr_fresnel_metal(MaterialRec m, float c) { return m.tint + (1.0 - m.tint) * mr_schlick5(c); }
+
+// What the layers over the base leave of it: the coat's (1 - clearcoat F_c(n_c.wo)) and
+// the sheen's albedo scaling (its min over wo and wi).
+float mr_coat_weight(MrLobes l, vec3 wo) {
+#ifdef HAS_GLTF_CLEARCOAT
+  return l.coat * gltf_coat_fresnel(dot(l.coat_n, wo));
+#else
+  return 0.0;
+#endif
+}
+float mr_sheen_scale(MrLobes l, float cos_o, float cos_i) {
+#ifdef HAS_GLTF_SHEEN
+  float s = max3(l.sheen);
+  if (s <= 0.0) return 1.0;
+  return max(0.0, 1.0 - s * max(gltf_sheen_albedo(cos_o, l.sheen_roughness), gltf_sheen_albedo(cos_i, l.sheen_roughness)));
+#else
+  return 1.0;
+#endif
 }
 
-// The smooth lobe's reflectance at incidence cos_o (a mirror: h = n).
-vec3 mr_mirror_fresnel(MaterialRec m, MetallicRoughnessRec q, float cos_o) {
-  float s5 = mr_schlick5(cos_o);
-  return (1.0 - q.metallic) * vec3(q.f0 + (1.0 - q.f0) * s5) + q.metallic * (m.tint + (1.0 - m.tint) * s5);
+// The lobe choice at wo: x = p_c (the coat), y = p_s (the base's specular lobe, of what
+// the coat leaves), z = p_t (the transmission, of what the specular lobe leaves); the
+// rest is the cosine-weighted hemisphere.
+vec3 mr_probabilities(MaterialRec m, MrLobes l, vec3 wo) {
+  float ws = l.metallic * luminance(mr_fresnel_metal(m, wo.z)) + (1.0 - l.metallic) * max3(mr_fresnel_layer(l, wo.z));
+  float wd = (1.0 - l.metallic) * (1.0 - max3(mr_fresnel_layer(l, wo.z))) * luminance(m.tint);
+  float wc = mr_coat_weight(l, wo), wt = 0.0;
+#ifdef HAS_GLTF_TRANSMISSION
+  wt = wd * l.transmission;
+  wd -= wt;
+#endif
+#ifdef HAS_GLTF_SHEEN
+  float e = max3(l.sheen) * gltf_sheen_albedo(wo.z, l.sheen_roughness);
+  float keep = max(0.0, 1.0 - e);
+  ws *= keep;
+  wt *= keep;
+  wd = wd * keep + e;
+#endif
+  float ps = wd + wt <= 0.0 ? 1.0 : clamp(ws / (ws + wd + wt), 0.1, 0.9);  // no cosine-sampled light: all specular
+  float pt = wt <= 0.0 ? 0.0 : wd <= 0.0 ? 1.0 : clamp(wt / (wt + wd), 0.1, 0.9);
+  float pc = l.coat <= 0.0 ? 0.0 : clamp(wc / (wc + (1.0 - wc) * (ws + wd + wt)), 0.1, 0.9);
+  return vec3(pc, ps, pt);
 }
+
+// The smooth base lobe's reflectance at incidence cos_o (a mirror: h = n).
+vec3 mr_mirror_fresnel(MaterialRec m, MrLobes l, float cos_o) {
+  return (1.0 - l.metallic) * mr_fresnel_layer(l, cos_o) + l.metallic * mr_fresnel_metal(m, cos_o);
+}
+
+#ifdef HAS_GLTF_TRANSMISSION
+// The thin-walled transmission (wi below the surface): the GGX lobe of wi mirrored through
+// the surface, wr = (wi.x, wi.y, -wi.z), tinted by the base colour and weighted by what the
+// layers over it leave: (1 - metallic) transmission (1 - specular max(F(v.h))) tint D G2 / (4 n.v).
+vec3 mr_eval_transmission(MaterialRec m, MrLobes l, vec3 wo, vec3 wi, out float pdf) {
+  pdf = 0.0;
+  if (l.transmission <= 0.0 || mr_smooth(l.roughness)) return vec3(0.0);
+  vec3 p = mr_probabilities(m, l, wo);
+  vec3 wr = vec3(wi.xy, -wi.z);
+  vec3 h = normalize(wo + wr);
+  float alpha = l.roughness * l.roughness, a2 = alpha * alpha;
+  vec3 f = (1.0 - l.metallic) * l.transmission * (1.0 - max3(mr_fresnel_layer(l, dot(wo, h)))) * m.tint *
+           (ggx_d(h.z, a2) * ggx_g2(wo.z, wr.z, a2) / (4.0 * wo.z));
+  f *= mr_sheen_scale(l, wo.z, wr.z) * (1.0 - mr_coat_weight(l, wo));
+  pdf = (1.0 - p.x) * (1.0 - p.y) * p.z * pdf_ggx_vndf(wo, h, a2);
+  return f;
+}
+#endif
 
 vec3 eval_metallic_roughness(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;
-  if (wi.z <= 0.0 || wo.z <= 0.0) return vec3(0.0);
-  MetallicRoughnessRec q = metallic_roughness_rec(m);
+  if (wo.z <= 0.0) return vec3(0.0);
+  MrLobes l = mr_lobes(m);
+#ifdef HAS_GLTF_TRANSMISSION
+  if (wi.z < 0.0) return mr_eval_transmission(m, l, wo, wi, pdf);
+#endif
+  if (wi.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(wo + wi);
-  float s5 = mr_schlick5(dot(wo, h));
-  float fd = q.f0 + (1.0 - q.f0) * s5;
-  float ps = mr_specular_probability(m, q, wo.z);
-  vec3 f = (1.0 - q.metallic) * (1.0 - fd) * m.tint * (INV_PI * wi.z);
-  pdf = (1.0 - ps) * pdf_cosine_hemisphere(wi);
-  if (q.roughness >= 0.03) {
-    float alpha = q.roughness * q.roughness, a2 = alpha * alpha;
-    vec3 fresnel = (1.0 - q.metallic) * vec3(fd) + q.metallic * (m.tint + (1.0 - m.tint) * s5);
+  float vh = dot(wo, h);
+  vec3 fd = mr_fresnel_layer(l, vh);
+  vec3 p = mr_probabilities(m, l, wo);
+  vec3 f = (1.0 - l.metallic) * (1.0 - max3(fd)) * m.tint * (INV_PI * wi.z);
+  float pdf_base = (1.0 - p.y) * pdf_cosine_hemisphere(wi);
+#ifdef HAS_GLTF_TRANSMISSION
+  f *= 1.0 - l.transmission;
+  pdf_base *= 1.0 - p.z;
+#endif
+  if (!mr_smooth(l.roughness)) {
+    float alpha = l.roughness * l.roughness, a2 = alpha * alpha;
+    vec3 fresnel = (1.0 - l.metallic) * fd + l.metallic * mr_fresnel_metal(m, vh);
     f += fresnel * (ggx_d(h.z, a2) * ggx_g2(wo.z, wi.z, a2) / (4.0 * wo.z));  // f_s |n.l|
-    pdf += ps * pdf_ggx_vndf(wo, h, a2);
+    pdf_base += p.y * pdf_ggx_vndf(wo, h, a2);
   }
+#ifdef HAS_GLTF_SHEEN
+  f = f * mr_sheen_scale(l, wo.z, wi.z) + l.sheen * gltf_sheen_eval(l.sheen_roughness, wo, wi);
+#endif
+  pdf = (1.0 - p.x) * pdf_base;
+#ifdef HAS_GLTF_CLEARCOAT
+  if (l.coat > 0.0) {
+    float wc = mr_coat_weight(l, wo);
+    f *= 1.0 - wc;
+    if (!mr_smooth(l.coat_roughness)) {
+      float pdf_c;
+      f += vec3(wc * gltf_coat_eval(l.coat_n, l.coat_roughness * l.coat_roughness, wo, wi, pdf_c));
+      pdf += p.x * pdf_c;
+    }
+  }
+#endif
   return f;
 }
 
 bool sample_metallic_roughness(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {
   if (wo.z <= 0.0) return false;
-  MetallicRoughnessRec q = metallic_roughness_rec(m);
-  float ps = mr_specular_probability(m, q, wo.z);
-  bool specular = u.z < ps;
-  if (specular && q.roughness < 0.03) {
+  MrLobes l = mr_lobes(m);
+  vec3 p = mr_probabilities(m, l, wo);
+  float uz = u.z;
+  s.delta = false;
+#ifdef HAS_GLTF_CLEARCOAT
+  if (uz < p.x) {
+    bool smooth_coat = mr_smooth(l.coat_roughness);
+    s.wi = gltf_coat_sample(l.coat_n, l.coat_roughness * l.coat_roughness, wo, u.xy, smooth_coat);
+    if (s.wi.z <= 0.0 || dot(l.coat_n, s.wi) <= 0.0) return false;  // below the surface or the coat
+    if (smooth_coat) {
+      s.weight = vec3(mr_coat_weight(l, wo) / p.x);
+      s.pdf = 0.0;
+      s.delta = true;
+      return true;
+    }
+    vec3 f = eval_metallic_roughness(m, wo, s.wi, entering, s.pdf);
+    s.weight = s.pdf > 0.0 ? f / s.pdf : vec3(0.0);
+    return s.pdf > 0.0;
+  }
+  uz = (uz - p.x) / (1.0 - p.x);
+#endif
+  bool specular = uz < p.y;
+  if (specular && mr_smooth(l.roughness)) {
     s.wi = vec3(-wo.x, -wo.y, wo.z);
-    s.weight = mr_mirror_fresnel(m, q, wo.z) / ps;
+    s.weight = mr_mirror_fresnel(m, l, wo.z) / p.y;
+#if defined(HAS_GLTF_CLEARCOAT) || defined(HAS_GLTF_SHEEN)
+    s.weight *= (1.0 - mr_coat_weight(l, wo)) * mr_sheen_scale(l, wo.z, wo.z) / (1.0 - p.x);
+#endif
     s.pdf = 0.0;
     s.delta = true;
     return true;
   }
-  s.wi = specular ? reflect(-wo, sample_ggx_vndf(wo, q.roughness * q.roughness, u.xy)) : sample_cosine_hemisphere(u.xy);
-  s.delta = false;
+#ifdef HAS_GLTF_TRANSMISSION
+  if (!specular && (uz - p.y) / (1.0 - p.y) < p.z) {  // the thin-walled transmission
+    if (mr_smooth(l.roughness)) {  // straight through
+      s.wi = -wo;
+      s.weight = (1.0 - l.metallic) * l.transmission * (1.0 - max3(mr_fresnel_layer(l, wo.z))) * m.tint *
+                 ((1.0 - mr_coat_weight(l, wo)) * mr_sheen_scale(l, wo.z, wo.z) / ((1.0 - p.x) * (1.0 - p.y) * p.z));
+      s.pdf = 0.0;
+      s.delta = true;
+      return true;
+    }
+    vec3 wr = reflect(-wo, sample_ggx_vndf(wo, l.roughness * l.roughness, u.xy));
+    if (wr.z <= 0.0) return false;
+    s.wi = vec3(wr.xy, -wr.z);
+    vec3 f = eval_metallic_roughness(m, wo, s.wi, entering, s.pdf);
+    s.weight = s.pdf > 0.0 ? f / s.pdf : vec3(0.0);
+    return s.pdf > 0.0;
+  }
+#endif
+  s.wi = specular ? reflect(-wo, sample_ggx_vndf(wo, l.roughness * l.roughness, u.xy)) : sample_cosine_hemisphere(u.xy);
+#ifdef HAS_GLTF_TRANSMISSION
+  if (s.wi.z <= 0.0) return false;  // a reflection below the horizon (not the transmission's)
+#endif
   vec3 f = eval_metallic_roughness(m, wo, s.wi, entering, s.pdf);
   s.weight = s.pdf > 0.0 ? f / s.pdf : vec3(0.0);
   return s.pdf > 0.0;

@@ -1,6 +1,7 @@
 // glTF's metallic-roughness materials (with KHR_materials_emissive_strength,
-// _transmission and _ior) as GltfMaterial, and their image maps: from a bufferView, a
-// data: URI or a file through the resolver, decoded by our own image reader.
+// _transmission, _ior, _specular, _clearcoat and _sheen) as GltfMaterial, and their image
+// maps: from a bufferView, a data: URI or a file through the resolver, decoded by our own
+// image reader.
 #include "scene/gltf_materials.h"
 
 #include <algorithm>
@@ -85,9 +86,86 @@ GltfMaterial Materials::read(int index) {
     g.normal_map.strength = float(m.normalTexture.scale);
   }
   g.emissive_map = info(m.emissiveTexture.index, m.emissiveTexture.texCoord, m.emissiveTexture.extensions, at + "/emissiveTexture");
+  read_lobes(m.extensions, at, g);
   // Read (it must be valid) and not used: a path tracer computes the occlusion (docs/gltf.md).
   g.occlusion_map = info(m.occlusionTexture.index, m.occlusionTexture.texCoord, m.occlusionTexture.extensions, at + "/occlusionTexture");
   return g;
+}
+
+// KHR_materials_specular, _clearcoat and _sheen: their factors (strictly in range) and maps.
+void Materials::read_lobes(const tinygltf::ExtensionMap& ext, const std::string& at, GltfMaterial& g) {
+  auto find = [&](const char* name) -> const tinygltf::Value* {
+    auto e = ext.find(name);
+    return e == ext.end() ? nullptr : &e->second;
+  };
+  auto number = [&](const tinygltf::Value& v, const char* key, float fallback, float hi, const std::string& xat) {
+    if (!v.Has(key)) return fallback;
+    const tinygltf::Value& n = v.Get(key);
+    if (!n.IsNumber() || !(n.GetNumberAsDouble() >= 0.0 && n.GetNumberAsDouble() <= hi))
+      r_.fail(xat + "/" + key, "must be a number in [0, " + std::to_string(int(hi)) + "]");
+    return float(n.GetNumberAsDouble());
+  };
+  auto color = [&](const tinygltf::Value& v, const char* key, glm::vec3 fallback, float hi, const std::string& xat) {
+    if (!v.Has(key)) return fallback;
+    const tinygltf::Value& c = v.Get(key);
+    if (!c.IsArray() || c.ArrayLen() != 3) r_.fail(xat + "/" + key, "must be an array of 3 numbers");
+    glm::vec3 out;
+    for (int i = 0; i < 3; ++i) {
+      const tinygltf::Value& n = c.Get(i);
+      if (!n.IsNumber() || !(n.GetNumberAsDouble() >= 0.0 && n.GetNumberAsDouble() <= hi))
+        r_.fail(xat + "/" + key + "/" + std::to_string(i), "must be a number in [0, " + std::to_string(int(hi)) + "]");
+      out[i] = float(n.GetNumberAsDouble());
+    }
+    return out;
+  };
+  // An extension's textureInfo (index, texCoord, its own KHR_texture_transform).
+  auto map = [&](const tinygltf::Value& v, const char* key, const std::string& xat, float* scale = nullptr) {
+    if (!v.Has(key)) return GltfTexture{};
+    const tinygltf::Value& t = v.Get(key);
+    const std::string tat = xat + "/" + key;
+    if (!t.IsObject() || !t.Has("index") || !t.Get("index").IsInt()) r_.fail(tat, "must be a textureInfo with an integer index");
+    const int tex_coord = t.Has("texCoord") && t.Get("texCoord").IsInt() ? t.Get("texCoord").GetNumberAsInt() : 0;
+    tinygltf::ExtensionMap inner;
+    if (t.Has("extensions") && t.Get("extensions").IsObject())
+      for (const std::string& k : t.Get("extensions").Keys()) inner[k] = t.Get("extensions").Get(k);
+    GltfTexture out = info(t.Get("index").GetNumberAsInt(), tex_coord, inner, tat);
+    if (scale && t.Has("scale")) {
+      const tinygltf::Value& n = t.Get("scale");
+      if (!n.IsNumber() || !(std::abs(n.GetNumberAsDouble()) <= 100.0)) r_.fail(tat + "/scale", "must be in [-100, 100]");
+      *scale = float(n.GetNumberAsDouble());
+    }
+    return out;
+  };
+  if (const tinygltf::Value* v = find("KHR_materials_specular")) {
+    const std::string xat = at + "/extensions/KHR_materials_specular";
+    g.specular = number(*v, "specularFactor", 1.0f, 1.0f, xat);
+    g.specular_color = color(*v, "specularColorFactor", glm::vec3(1.0f), 1000.0f, xat);
+    g.specular_map = map(*v, "specularTexture", xat);
+    g.specular_color_map = map(*v, "specularColorTexture", xat);
+  }
+  if (const tinygltf::Value* v = find("KHR_materials_clearcoat")) {
+    const std::string xat = at + "/extensions/KHR_materials_clearcoat";
+    g.clearcoat = number(*v, "clearcoatFactor", 0.0f, 1.0f, xat);
+    g.clearcoat_roughness = number(*v, "clearcoatRoughnessFactor", 0.0f, 1.0f, xat);
+    g.clearcoat_map = map(*v, "clearcoatTexture", xat);
+    g.clearcoat_roughness_map = map(*v, "clearcoatRoughnessTexture", xat);
+    float scale = 1.0f;
+    g.clearcoat_normal_map = map(*v, "clearcoatNormalTexture", xat, &scale);
+    g.clearcoat_normal_map.strength = scale;
+  }
+  if (const tinygltf::Value* v = find("KHR_materials_transmission"))
+    g.transmission_map = map(*v, "transmissionTexture", at + "/extensions/KHR_materials_transmission");
+  // KHR_materials_volume: a volume (not a thin wall) where thicknessFactor > 0 (the
+  // extension's rule); its BSDF is not implemented (docs/gltf.md).
+  if (const tinygltf::Value* v = find("KHR_materials_volume"))
+    g.volume = number(*v, "thicknessFactor", 0.0f, 1e6f, at + "/extensions/KHR_materials_volume") > 0.0f;
+  if (const tinygltf::Value* v = find("KHR_materials_sheen")) {
+    const std::string xat = at + "/extensions/KHR_materials_sheen";
+    g.sheen_color = color(*v, "sheenColorFactor", glm::vec3(0.0f), 1.0f, xat);
+    g.sheen_roughness = number(*v, "sheenRoughnessFactor", 0.0f, 1.0f, xat);
+    g.sheen_color_map = map(*v, "sheenColorTexture", xat);
+    g.sheen_roughness_map = map(*v, "sheenRoughnessTexture", xat);
+  }
 }
 
 GltfTexture Materials::info(int texture, int tex_coord, const tinygltf::ExtensionMap& ext, const std::string& at) {

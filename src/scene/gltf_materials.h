@@ -22,6 +22,7 @@ class Materials {
 
  private:
   GltfMaterial read(int index);
+  void read_lobes(const tinygltf::ExtensionMap& ext, const std::string& at, GltfMaterial& g);
   std::shared_ptr<const GltfImage> map(int texture, const std::string& at);
   // A textureInfo (index, texCoord, KHR_texture_transform) with its texture's sampler.
   GltfTexture info(int texture, int tex_coord, const tinygltf::ExtensionMap& ext, const std::string& at);

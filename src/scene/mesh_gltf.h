@@ -45,13 +45,23 @@ struct GltfMaterial {
   float roughness = 1.0f;
   glm::vec3 emissive{0.0f};   // emissiveFactor * KHR_materials_emissive_strength
   float ior = 1.5f;           // KHR_materials_ior (0: Fresnel 1)
-  float transmission = 0.0f;  // KHR_materials_transmission
+  float transmission = 0.0f;  // KHR_materials_transmission (thin-walled unless `volume`)
+  bool volume = false;        // KHR_materials_volume with thicknessFactor > 0: not thin-walled
   int alpha_mode = 0;         // 0 OPAQUE, 1 MASK, 2 BLEND
   float alpha_cutoff = 0.5f;
   bool double_sided = false;
   GltfTexture base_color_map, metallic_roughness_map, normal_map, emissive_map, occlusion_map;
+  // KHR_materials_specular, _clearcoat, _sheen (scene/gltf_materials.cpp; materials/gltf_lobes.h)
+  float specular = 1.0f;
+  glm::vec3 specular_color{1.0f};
+  float clearcoat = 0.0f, clearcoat_roughness = 0.0f;
+  glm::vec3 sheen_color{0.0f};
+  float sheen_roughness = 0.0f;
+  GltfTexture specular_map, specular_color_map, clearcoat_map, clearcoat_roughness_map, clearcoat_normal_map, sheen_color_map,
+      sheen_roughness_map, transmission_map;
   bool uses_texcoord(int set) const {
-    for (const GltfTexture* t : {&base_color_map, &metallic_roughness_map, &normal_map, &emissive_map})
+    for (const GltfTexture* t : {&base_color_map, &metallic_roughness_map, &normal_map, &emissive_map, &specular_map, &specular_color_map,
+                                 &clearcoat_map, &clearcoat_roughness_map, &clearcoat_normal_map, &sheen_color_map, &sheen_roughness_map, &transmission_map})
       if (*t && t->tex_coord == set) return true;
     return false;
   }

@@ -77,8 +77,9 @@ int Loader::gltf_material(const GltfMaterial& g, XmlAttrs& a) {
   Material m;
   m.line = a.line();
   m.emission = g.emissive;  // with the base colour: both shade (docs/gltf.md)
-  if (g.transmission >= 0.5f) {
-    // KHR_materials_transmission has no BSDF of its own yet: a stand-in smooth dielectric.
+  if (g.volume && g.transmission >= 0.5f) {
+    // KHR_materials_volume has no BSDF of its own yet: a stand-in smooth dielectric
+    // (thin-walled transmission is GltfPbr's: docs/gltf.md).
     m.tint = g.base_color;
     m.params = SmoothDielectric{.ior = g.ior >= 1.0f ? g.ior : 1.5f};
     scene.materials.push_back(m);
@@ -115,6 +116,17 @@ int Loader::gltf_material(const GltfMaterial& g, XmlAttrs& a) {
   add(g.metallic_roughness_map, kLinear, p.metal_rough);
   add(g.normal_map, kNormal, p.normal);
   add(g.emissive_map, kSrgb, p.emissive);
+  p.lobes = GltfLobes{.specular = g.specular, .specularColor = g.specular_color, .clearcoat = g.clearcoat,
+                      .clearcoatRoughness = g.clearcoat_roughness, .sheenColor = g.sheen_color, .sheenRoughness = g.sheen_roughness,
+                      .transmission = g.transmission};
+  add(g.specular_map, kLinear, p.specular);  // its alpha
+  add(g.specular_color_map, kSrgb, p.specular_color);
+  add(g.clearcoat_map, kLinear, p.clearcoat);
+  add(g.clearcoat_roughness_map, kLinear, p.clearcoat_roughness);
+  add(g.clearcoat_normal_map, kNormal, p.clearcoat_normal);
+  add(g.sheen_color_map, kSrgb, p.sheen_color);
+  add(g.sheen_roughness_map, kLinear, p.sheen_roughness);  // its alpha
+  add(g.transmission_map, kLinear, p.transmission);
   m.params = p;
   scene.materials.push_back(m);
   return int(scene.materials.size()) - 1;

@@ -211,6 +211,8 @@ std::string generate_prelude(const Features& features) {
   }
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i))) g += "#include \"shapes/" + std::string(kShapeKinds[i].glsl) + ".glsl\"\n";
+  for (int i = 0; i < kNumMaterialFeatures; ++i)
+    if (f.has(MaterialFeature(i)) && kMaterialFeatureSnippets[i]) g += std::string("#include \"") + kMaterialFeatureSnippets[i] + "\"\n";
   for (int i = 0; i < kNumMaterialKinds; ++i)
     if (f.has(MaterialKind(i))) g += "#include \"materials/" + std::string(kMaterialKinds[i].glsl) + ".glsl\"\n";
 

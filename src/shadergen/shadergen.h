@@ -39,12 +39,12 @@ struct Features {
   }
   uint64_t key() const {
     return uint64_t(shapes) | uint64_t(compute) << 15 | uint64_t(lights | punctual << 10) << 16 | uint64_t(materials) << 32 |
-           uint64_t(motion) << 62 | uint64_t(env_map) << 63 | uint64_t(mode) << 56 |  // materials use bits 32..51
+           uint64_t(motion) << 62 | uint64_t(env_map) << 63 | uint64_t(mode) << 60 |  // materials use bits 32..51
            uint64_t(material_features) << 52;
   }
   static Features of(const Scene& scene);
 };
-static_assert(kNumShapeKinds <= 10 && kNumLightKinds <= 6 && kNumMaterialKinds <= 20 && kNumMaterialFeatures <= 4 && kNumRenderModes <= 64, "Features::key bits");
+static_assert(kNumShapeKinds <= 10 && kNumLightKinds <= 6 && kNumMaterialKinds <= 20 && kNumMaterialFeatures <= 8 && kNumRenderModes <= 4, "Features::key bits");
 
 class ShaderGenError : public std::runtime_error {
  public:
