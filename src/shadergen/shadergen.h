@@ -25,6 +25,9 @@ struct Features {
   // only; the same code, run on every core: some GPUs, the H100 among them, give
   // fragment shaders a small part of their cores). A renderer setting too.
   bool compute = false;
+  // The camera pass also writes the denoiser's first-hit auxiliaries (camera_aux.glsl);
+  // a renderer setting too.
+  bool aux = false;
   bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
   bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
   bool has_light(ShapeKind k) const { return lights >> int(k) & 1u; }
@@ -36,13 +39,14 @@ struct Features {
     return false;
   }
   uint64_t key() const {
-    return uint64_t(shapes) | uint64_t(compute) << 15 | uint64_t(lights) << 16 | uint64_t(materials) << 32 |
+    return uint64_t(shapes) | uint64_t(compute) << 15 | uint64_t(lights) << 16 | uint64_t(aux) << 31 | uint64_t(materials) << 32 |
            uint64_t(motion) << 62 | uint64_t(env_map) << 63 | uint64_t(mode) << 56 |  // materials use bits 32..51
            uint64_t(material_features) << 52;
   }
   static Features of(const Scene& scene);
 };
-static_assert(kNumShapeKinds <= 15 && kNumMaterialKinds <= 20 && kNumMaterialFeatures <= 4 && kNumRenderModes <= 64, "Features::key bits");
+static_assert(kNumShapeKinds <= 15 &&  // lights too: bits 16..30, aux 31
+              kNumMaterialKinds <= 20 && kNumMaterialFeatures <= 4 && kNumRenderModes <= 64, "Features::key bits");
 
 class ShaderGenError : public std::runtime_error {
  public:

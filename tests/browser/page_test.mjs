@@ -132,14 +132,14 @@ function trimmedSquaredChange(a, b) {
   return sum / keep;
 }
 
-// Standard error of the image's mean luminance from the per-pixel second moment (alpha).
+// Standard error of the image's mean luminance from the per-pixel luminance variance (alpha).
 function meanStdError(px, samples) {
   let lum = 0, variance = 0;
   const n = px.length / 4;
   for (let i = 0; i < px.length; i += 4) {
     const l = 0.2126 * px[i] + 0.7152 * px[i + 1] + 0.0722 * px[i + 2];
     lum += l;
-    variance += Math.max(0, px[i + 3] - l * l);
+    variance += px[i + 3];  // a bound on the variance of the samples' luminance (Accumulator::read_radiance)
   }
   return Math.sqrt(variance / samples) / n / (lum / n);
 }
