@@ -57,14 +57,27 @@ vec2 depth_gradient(ivec2 p) {
   return g;
 }
 
-// SVGF's geometric edge-stopping weight of tap q for pixel p at screen offset o.
-float geometry_weight(ivec2 p, ivec2 q, vec2 grad, vec3 np, bool valid_p) {
-  float zp = depth(p), zq = depth(q);
-  float wz = exp(-abs(zp - zq) / (u_sigma_z * dot(grad, abs(vec2(q - p))) + 1.0e-3 * abs(zp) + 1.0e-6));
+// What the geometric weights need of pixel p, fetched once.
+struct Guide {
+  float z;     // depth
+  vec2 grad;   // depth_gradient
+  vec3 n;      // unit normal (when valid)
+  bool valid;  // a surface: the ray did not leave the scene
+};
+Guide guide(ivec2 p) {
+  vec3 n = texelFetch(u_aux1, p, 0).xyz;
+  bool valid = dot(n, n) > 0.25;  // else the ray left the scene (or an edge of one)
+  return Guide(depth(p), depth_gradient(p), valid ? normalize(n) : n, valid);
+}
+
+// SVGF's geometric edge-stopping weight of tap q for pixel p (0 across a sky edge).
+float geometry_weight(Guide g, ivec2 p, ivec2 q) {
   vec3 nq = texelFetch(u_aux1, q, 0).xyz;
-  bool valid_q = dot(nq, nq) > 0.25;  // else the ray left the scene (or an edge of one)
-  float wn = valid_p != valid_q ? 0.0 : (valid_p ? pow(max(dot(normalize(np), normalize(nq)), 0.0), u_sigma_n) : 1.0);
-  return wz * wn;
+  bool valid_q = dot(nq, nq) > 0.25;
+  if (valid_q != g.valid) return 0.0;
+  float wn = g.valid ? pow(max(dot(g.n, normalize(nq)), 0.0), u_sigma_n) : 1.0;
+  float zq = depth(q);
+  return wn * exp(-abs(g.z - zq) / (u_sigma_z * dot(g.grad, abs(vec2(q - p))) + 1.0e-3 * abs(g.z) + 1.0e-6));
 }
 
 const float kB3[3] = float[3](0.375, 0.25, 0.0625);  // the B3 spline: 1/16 1/4 3/8 1/4 1/16
@@ -78,15 +91,14 @@ void main() {
   if (u_samples < 4) {
     // The luminance's variance over the geometrically similar 5x5 neighbours, a sample
     // each: the pixels' own estimate has (n - 1) < 3 degrees of freedom.
-    vec2 grad = depth_gradient(p);
-    vec3 np = texelFetch(u_aux1, p, 0).xyz;
-    bool valid_p = dot(np, np) > 0.25;
+    Guide g = guide(p);
     float sw = 0.0, m1 = 0.0, m2 = 0.0;
     for (int y = -2; y <= 2; ++y)
       for (int x = -2; x <= 2; ++x) {
         ivec2 q = p + ivec2(x, y);
         if (!inside(q)) continue;
-        float w = geometry_weight(p, q, grad, np, valid_p);
+        float w = geometry_weight(g, p, q);
+        if (w == 0.0) continue;
         float l = dot(kLum, demodulated(q));
         sw += w, m1 += w * l, m2 += w * l * l;
       }
@@ -108,9 +120,7 @@ void main() {
       gw += w;
     }
   float sd = sqrt(max(gv / gw, 0.0));
-  vec2 grad = depth_gradient(p);
-  vec3 np = texelFetch(u_aux1, p, 0).xyz;
-  bool valid_p = dot(np, np) > 0.25;
+  Guide g = guide(p);
   float sw = kB3[0] * kB3[0];  // the centre tap, weight 1 in every edge-stopping function
   vec3 sdiff = vec3(0.0);
   float svar = sw * sw * cp.a;
@@ -119,9 +129,11 @@ void main() {
       if (x == 0 && y == 0) continue;
       ivec2 q = p + ivec2(x, y) * u_step;
       if (!inside(q)) continue;
+      float wg = geometry_weight(g, p, q);
+      if (wg == 0.0) continue;  // across an edge: the tap adds nothing
       vec4 cq = texelFetch(u_input, q, 0);
       float wl = exp(-abs(lp - dot(kLum, cq.rgb)) / (u_sigma_l * sd + 1.0e-10));
-      float w = kB3[abs(x)] * kB3[abs(y)] * geometry_weight(p, q, grad, np, valid_p) * wl;
+      float w = kB3[abs(x)] * kB3[abs(y)] * wg * wl;
       sw += w;
       sdiff += w * (cq.rgb - cp.rgb);
       svar += w * w * cq.a;

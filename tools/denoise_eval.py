@@ -17,6 +17,7 @@ relMSE is core/metrics.h's: the mean of (x - r)^2 / (r^2 + 0.01) over pixels and
 PNGs of the raw and denoised images at each spp are left in --dir to look at.
 """
 import argparse
+import json
 import os
 import re
 import struct
@@ -143,11 +144,13 @@ def main():
                 row[key + "_edge"] = rel_mse(img, refimg, edge)
                 row[key + "_tex"] = rel_mse(img, refimg, tex)
             rows.append(row)
+            with open(base + ".json", "w") as fj:
+                json.dump(row, fj)
             print(f"{scene} {n} spp: raw {row['raw']:.4g}, denoised {row['den']:.4g}, blend {row['blend']:.4g} (w {weight:.3f})",
                   file=sys.stderr, flush=True)
         row_edges, row_tex = sum(edge), sum(tex)
         rows.append({"scene": scene, "masks": (row_edges, row_tex, w * h), "ref_est": ref_est})
-    print(f"| scene | spp | raw | denoised | shipped blend (weight) | edges: raw / denoised / blend | texture: raw / denoised / blend |")
+    print(f"| scene | spp | raw (estimated) | denoised | shipped blend (weight) | edges: raw / denoised / blend | texture: raw / denoised / blend |")
     print("|---|---|---|---|---|---|---|")
     f = lambda v: "n/a" if v != v else f"{v:.3g}"
     for r in rows:
@@ -156,7 +159,7 @@ def main():
             print(f"| {r['scene']} | reference {a.ref_spp} spp, its estimated relMSE {f(r['ref_est'])} | {all_} px | | | "
                   f"{e} px | {t} px |")
             continue
-        print(f"| {r['scene']} | {r['spp']} | {f(r['raw'])} | {f(r['den'])} | {f(r['blend'])} ({r['weight']:.2f}) | "
+        print(f"| {r['scene']} | {r['spp']} | {f(r['raw'])} ({f(r['est'])}) | {f(r['den'])} | {f(r['blend'])} ({r['weight']:.2f}) | "
               f"{f(r['raw_edge'])} / {f(r['den_edge'])} / {f(r['blend_edge'])} | {f(r['raw_tex'])} / {f(r['den_tex'])} / {f(r['blend_tex'])} |")
 
 

@@ -40,6 +40,7 @@ bool write_image(const std::string& out, int w, int h, const std::vector<float>&
 // --denoise: the denoiser's cost (the median of 3 runs, waited for, after one that builds
 // its programs), its images and the auxiliaries. false when a file cannot be written.
 bool denoise_outputs(const Options& o, Renderer& r, const ErrorEstimate& est) {
+  r.denoiser().params = o.denoise_params;
   const float automatic = denoise_weight(est.rel_mse, est.known);
   const float weight = o.denoise_weight >= 0.0f ? o.denoise_weight : automatic;
   r.denoised(weight);

@@ -41,8 +41,9 @@ struct DenoiseParams {
 // The blend weight of the filtered image given the raw image's estimated relMSE (the
 // renderer's own, core/metrics.h; no estimate yet: 1): 1 while the image is noisy, falling
 // log-linearly to 0 between kFadeHigh and kFadeLow, where the filter's own error (its
-// bias at texture and edge detail) would no longer be below the raw image's.
-constexpr double kFadeHigh = 1e-2, kFadeLow = 1e-3;
+// bias at edges and in the lighting's gradients) is no longer below the raw image's: in
+// the Cornell box at 128x128 between 256 and 1024 spp (docs/denoise.md).
+constexpr double kFadeHigh = 1e-3, kFadeLow = 1e-4;
 float denoise_weight(double estimated_rel_mse, bool known = true);
 
 class Denoiser {

@@ -207,9 +207,16 @@ int Renderer::step() {
   return added;
 }
 
-void Renderer::display(int x, int y) const {
-  const bool denoised = settings_.aux && settings_.denoise > 0.0f && samples() > 0;
-  display_.draw(denoised ? this->denoised(settings_.denoise) : accum_.radiance(), settings_.tonemap, settings_.exposure, x, y, vao_);
+void Renderer::display(int x, int y) const { display_.draw(shown(), settings_.tonemap, settings_.exposure, x, y, vao_); }
+
+const Texture& Renderer::shown() const {
+  if (!settings_.aux || settings_.denoise <= 0.0f || samples() == 0) return accum_.radiance();
+  // Filtered again at 1, 2, 4, ... samples of an image, not at every sweep: a run costs
+  // about one sample of path tracing on a CPU rasteriser (docs/denoise.md).
+  if (denoised_.epoch != accum_.epoch() || samples() >= 2 * denoised_.samples || denoiser_.output().width() != width() ||
+      denoiser_.output().height() != height())
+    denoised(settings_.denoise);
+  return denoiser_.output();
 }
 
 const Texture& Renderer::denoised(float weight) const {
@@ -230,8 +237,7 @@ std::vector<float> Renderer::read_radiance() const { return accum_.read_radiance
 std::vector<float> Renderer::read_variance() const { return accum_.read_variance(); }
 
 std::vector<uint8_t> Renderer::read_display() const {
-  const bool denoised = settings_.aux && settings_.denoise > 0.0f && samples() > 0;
-  return display_.read(denoised ? this->denoised(settings_.denoise) : accum_.radiance(), settings_.tonemap, settings_.exposure, vao_);
+  return display_.read(shown(), settings_.tonemap, settings_.exposure, vao_);
 }
 
 }  // namespace pt

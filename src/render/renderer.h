@@ -98,8 +98,11 @@ class Renderer {
     restart();
   }
   // Tone-mapped image into the bound draw framebuffer at viewport (x, y, w, h) = size():
-  // with settings().aux and denoise > 0 the denoised one (denoised()).
+  // with settings().aux and denoise > 0 the denoised one (shown()).
   void display(int x, int y) const;
+  // What display() and read_display() show: the mean, or with the denoiser on its image,
+  // filtered again at 1, 2, 4, ... samples and on a restart (in between the last one).
+  const Texture& shown() const;
   // The denoiser's image of the current mean with blend weight w (needs settings().aux),
   // filtered again only when the samples, the image or w changed; the accumulator is only read.
   const Texture& denoised(float weight) const;
