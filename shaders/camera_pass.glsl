@@ -1,11 +1,15 @@
 // camera_pass.glsl: what every render mode's program shares: the pass's uniforms, the
 // camera rays (pixel box filter, thin lens, shutter time), the NaN/Inf guard and the
-// blend into the running mean and the samples' variance (ping-pong). Each mode's root file (integrator.glsl,
+// blend into the running mean and the samples' variance (ping-pong), and with PT_AUX the
+// first-hit auxiliaries of the denoiser (render/denoise.h). Each mode's root file (integrator.glsl,
 // whitted.glsl, sh_irradiance.glsl; shadergen picks it) includes this first and then
 // defines trace_path: the radiance arriving along a camera ray.
 uniform highp sampler2D u_accum;
 uniform highp sampler2D u_stats_in;
-uniform highp sampler2D u_var_in;
+#ifdef PT_AUX
+uniform highp sampler2D u_aux0_in;
+uniform highp sampler2D u_aux1_in;
+#endif
 uniform float u_blend;       // weight of this pass: spp / (samples so far + spp)
 uniform int u_spp;           // samples per pixel in this pass
 uniform int u_sample_base;   // index of this pass's first sample
@@ -21,21 +25,31 @@ uniform float u_focal_distance;  // along u_cam_fwd
 uniform float u_shutter;         // camera samples are spread over [0, u_shutter]
 uniform vec3 u_env_color;
 
-// Outputs: the new running mean; running sums per pixel: x = non-finite samples
-// (dropped), y = rays cast; and per RGB channel the variance of the pixel's samples about
-// their mean (sum of squared deviations / samples). The fragment pass writes them to three
-// colour targets; the compute kernel (PT_COMPUTE: native GL ES 3.1+) to the same textures
-// as images, over 8x8-pixel groups covering the tile [u_origin, u_end) (columns x, rows y).
+// Outputs, two targets: accum = (the running mean RGB, the blue channel's variance);
+// stats = (non-finite samples, dropped; rays cast; the red and green channels' variance),
+// x and y running sums, the variance per channel that of the pixel's samples about their
+// mean (sum of squared deviations / samples). The variance once had a third target of its
+// own; these free channels hold it at no extra bandwidth (docs/benchmarks.md). The fragment
+// pass writes colour targets; the compute kernel (PT_COMPUTE: native GL ES 3.1+) the same
+// textures as images, over 8x8-pixel groups covering the tile [u_origin, u_end) (columns
+// x, rows y). With PT_AUX, two more: aux0 = (albedo RGB, view depth), aux1 = (shading
+// normal, 0), running means over the samples like the radiance (camera_aux.glsl).
 #ifdef PT_COMPUTE
 layout(rgba32f, binding = 0) writeonly uniform highp image2D o_accum_image;
 layout(rgba32f, binding = 1) writeonly uniform highp image2D o_stats_image;
-layout(rgba32f, binding = 2) writeonly uniform highp image2D o_var_image;
+#ifdef PT_AUX
+layout(rgba32f, binding = 2) writeonly uniform highp image2D o_aux0_image;
+layout(rgba32f, binding = 3) writeonly uniform highp image2D o_aux1_image;
+#endif
 uniform ivec2 u_origin;
 uniform ivec2 u_end;
 #else
 layout(location = 0) out vec4 o_accum;
 layout(location = 1) out vec4 o_stats;
-layout(location = 2) out vec4 o_var;
+#ifdef PT_AUX
+layout(location = 2) out vec4 o_aux0;
+layout(location = 3) out vec4 o_aux1;
+#endif
 #endif
 
 // A sample is bad when any channel's exponent bits are all ones (NaN or Inf): a bit
@@ -46,13 +60,20 @@ bool non_finite(vec3 c) {
 }
 
 #include "surface.glsl"
+#include "camera_aux.glsl"
 
 vec3 trace_path(Ray r);
 
-void render_pixel(ivec2 px, out vec4 accum, out vec4 stats, out vec4 var) {
+#ifdef PT_AUX
+vec4 g_aux0, g_aux1;  // this pass's mean of the auxiliaries, blended into the running one below
+#endif
+
+void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {
   vec3 sum = vec3(0.0);
+#ifdef PT_AUX
+  vec4 aux0 = vec4(0.0), aux1 = vec4(0.0);
+#endif
   vec3 w_mean = vec3(0.0), w_m2 = vec3(0.0);  // Welford: this pass's mean and squared deviations
-  float sum_l2 = 0.0;
   float bad = 0.0;
   g_rays = 0;
   for (int s = 0; s < u_spp; ++s) {
@@ -71,7 +92,14 @@ void render_pixel(ivec2 px, out vec4 accum, out vec4 stats, out vec4 var) {
       o += r * (cos(phi) * normalize(u_cam_right) + sin(phi) * normalize(u_cam_up));
       d = normalize(focus - o);
     }
+#ifdef PT_AUX
+    aux_start();
+#endif
     vec3 c = trace_path(Ray(o, d));
+#ifdef PT_AUX
+    aux0 += vec4(g_aux_albedo, g_aux_length * dot(d, u_cam_fwd));
+    aux1.xyz += g_aux_normal;
+#endif
     if (non_finite(c)) {
       bad += 1.0;
       c = vec3(0.0);
@@ -80,34 +108,44 @@ void render_pixel(ivec2 px, out vec4 accum, out vec4 stats, out vec4 var) {
     vec3 dev = c - w_mean;
     w_mean += dev / float(s + 1);
     w_m2 += dev * (c - w_mean);
-    float l = luminance(c);
-    sum_l2 += l * l;
   }
-  // rgb: mean radiance; a: mean squared luminance (for the per-pixel variance).
-  vec4 cur = vec4(sum, sum_l2) / float(u_spp);
+  vec3 cur = sum / float(u_spp);
   vec4 prev = u_blend >= 1.0 ? vec4(0.0) : texelFetch(u_accum, px, 0);
-  accum = u_blend >= 1.0 ? cur : mix(prev, cur, u_blend);
   vec4 prev_stats = u_blend >= 1.0 ? vec4(0.0) : texelFetch(u_stats_in, px, 0);
-  stats = prev_stats + vec4(bad, float(g_rays), 0.0, 0.0);
   // The variance about the mean of all samples so far, from the old one and this pass's
   // (Chan, Golub and LeVeque's pairwise update, on variances: b = this pass's share):
   // S = (1 - b) S_old + b S_pass + b (1 - b) (mean_pass - mean_old)^2.
   vec3 s_pass = w_m2 / float(u_spp);
-  vec3 dm = cur.rgb - prev.rgb;
-  vec3 s_old = u_blend >= 1.0 ? vec3(0.0) : texelFetch(u_var_in, px, 0).rgb;
-  var = vec4(mix(s_old, s_pass, u_blend) + u_blend * (1.0 - u_blend) * dm * dm, 0.0);
+  vec3 dm = cur - prev.rgb;
+  vec3 s_old = vec3(prev_stats.zw, prev.a);
+  vec3 var = mix(s_old, s_pass, u_blend) + u_blend * (1.0 - u_blend) * dm * dm;
+  accum = vec4(u_blend >= 1.0 ? cur : mix(prev.rgb, cur, u_blend), var.b);
+  stats = vec4(prev_stats.xy + vec2(bad, float(g_rays)), var.rg);
+#ifdef PT_AUX
+  aux0 /= float(u_spp);
+  aux1 /= float(u_spp);
+  g_aux0 = u_blend >= 1.0 ? aux0 : mix(texelFetch(u_aux0_in, px, 0), aux0, u_blend);
+  g_aux1 = u_blend >= 1.0 ? aux1 : mix(texelFetch(u_aux1_in, px, 0), aux1, u_blend);
+#endif
 }
 
 void main() {
 #ifdef PT_COMPUTE
   ivec2 px = u_origin + ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(px, u_end))) return;
-  vec4 accum, stats, var;
-  render_pixel(px, accum, stats, var);
+  vec4 accum, stats;
+  render_pixel(px, accum, stats);
   imageStore(o_accum_image, px, accum);
   imageStore(o_stats_image, px, stats);
-  imageStore(o_var_image, px, var);
+#ifdef PT_AUX
+  imageStore(o_aux0_image, px, g_aux0);
+  imageStore(o_aux1_image, px, g_aux1);
+#endif
 #else
-  render_pixel(ivec2(gl_FragCoord.xy), o_accum, o_stats, o_var);
+  render_pixel(ivec2(gl_FragCoord.xy), o_accum, o_stats);
+#ifdef PT_AUX
+  o_aux0 = g_aux0;
+  o_aux1 = g_aux1;
+#endif
 #endif
 }

@@ -14,6 +14,7 @@ vec3 trace_path(Ray r) {
   for (int bounce = 0;; ++bounce) {
     Hit h = scene_intersect(r);
     if (h.id < 0) {
+      AUX_MISS(beta);
 #ifdef HAS_ENV_MAP
       float w = 1.0;
       if (u_nee != 0 && !prev_delta) w = power_heuristic(prev_pdf, env_light_pdf(r.d));
@@ -24,6 +25,7 @@ vec3 trace_path(Ray r) {
       break;
     }
     Surface sf = surface_hit(r, h);
+    AUX_SURFACE(sf, beta, h.t);
     vec3 p = h.p;
     vec3 n = sf.n;
     // Emission from the front side; weighted against light sampling when this shape is a
@@ -38,6 +40,7 @@ vec3 trace_path(Ray r) {
     vec4 u_light = next4();  // xyz: light choice and point; w: Russian roulette
     vec4 u_bsdf = next4();   // xyz: BSDF sample; w: choice of a composite's child
     surface_resolve(sf, r, h, u_bsdf.w);
+    AUX_MATERIAL(sf, beta);
     MaterialRec m = sf.m;
     Frame fr = sf.fr;
     vec3 wo = sf.wo;

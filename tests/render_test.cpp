@@ -61,7 +61,7 @@ TileStats tile_stats(const std::vector<float>& img, int spp) {
           const float* p = &img[(size_t(y) * kSize + x) * 4];
           const double l = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
           sum += l;
-          var += std::max(0.0, double(p[3]) - l * l) / spp;
+          var += double(p[3]) / spp;  // alpha: the luminance variance of the samples
         }
       const int n = kTile * kTile;
       t.mean[ty * kTiles + tx] = sum / n;

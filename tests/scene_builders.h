@@ -90,7 +90,8 @@ inline RenderResult render_scene(const Scene& scene, int w, int h, int spp, Rend
 }
 
 // Mean luminance over pixels [x0,x1)x[y0,y1) and its standard error from the per-pixel
-// second moments the accumulator keeps.
+// luminance variance read_radiance gives in alpha ((sum of w_c sd_c)^2: the samples'
+// luminance variance when the channels are proportional, else a bound on it).
 struct Estimate {
   double mean, se;
 };
@@ -102,7 +103,7 @@ inline Estimate region_mean(const RenderResult& r, int x0, int y0, int x1, int y
       const float* p = &r.rgba[(size_t(y) * r.w + x) * 4];
       const double l = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
       sum += l;
-      var += std::max(0.0, double(p[3]) - l * l) / r.spp;
+      var += double(p[3]) / r.spp;
     }
   return {sum / n, std::sqrt(var) / n};
 }

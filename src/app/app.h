@@ -171,6 +171,10 @@ class App {
   };
   std::vector<ErrorPoint> error_history_;  // since the last restart
   float target_relmse_ = 0.0f;             // 0: none
+  // The denoiser (render/denoise.h) on the displayed image: the panel's toggle, on by
+  // default; its blend weight falls from 1 as the last estimate falls (denoise_weight).
+  bool denoise_ = true;
+  float denoise_blend() const;
   int target_stop_at_ = 0;                 // the samples at which an estimate reached the target; 0: not reached
   bool estimate_due_ = false;
   int next_estimate_at_ = 2, estimated_samples_ = 0;

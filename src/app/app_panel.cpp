@@ -152,6 +152,13 @@ void App::draw_panel() {
   draw_scene_controls();
   int mode = int(settings_.mode);  // each mode is its own program, compiled on first use
   if (ImGui::Combo("mode", &mode, kRenderModeLabels, kNumRenderModes)) settings_.mode = RenderMode(mode);
+  // The denoiser on the shown image (the accumulation stays the unbiased mean), with its
+  // blend weight, which falls as the estimated relMSE does (render/denoise.h). On the
+  // mode's row: the rows below keep their places (the browser tests click them).
+  ImGui::SameLine();
+  char denoise_label[48];
+  std::snprintf(denoise_label, sizeof denoise_label, denoise_ ? "denoise %.2f###denoise" : "denoise###denoise", double(denoise_blend()));
+  ImGui::Checkbox(denoise_label, &denoise_);
   if (options_.save_file) {
     // PNG: the image as displayed (tone-mapped); HDR: linear radiance.
     const int w = renderer_->width(), h = renderer_->height();
@@ -159,6 +166,11 @@ void App::draw_panel() {
     ImGui::SameLine();
     if (ImGui::Button("save HDR"))
       options_.save_file("pathtracer.hdr", encode_hdr(w, h, renderer_->read_radiance()), "image/vnd.radiance");
+    if (denoise_) {  // the raw estimate above, the denoised image as shown here
+      ImGui::SameLine();
+      if (ImGui::Button("save denoised HDR"))
+        options_.save_file("pathtracer-denoised.hdr", encode_hdr(w, h, renderer_->read_denoised(denoise_blend())), "image/vnd.radiance");
+    }
   }
 
   ImGui::Separator();

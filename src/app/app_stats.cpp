@@ -80,8 +80,12 @@ RenderSettings App::render_settings() const {
   const int n = renderer_->samples();
   const int stop = target_stop_at_ > 0 ? target_stop_at_ : estimate_due_ && renderer_->mid_sweep() ? n + 1 : 0;
   if (stop > 0 && (s.sample_limit <= 0 || stop < s.sample_limit)) s.sample_limit = stop;
+  s.aux = denoise_;
+  s.denoise = denoise_ ? denoise_blend() : 0.0f;
   return s;
 }
+
+float App::denoise_blend() const { return error_history_.empty() ? 1.0f : denoise_weight(error_history_.back().rel_mse); }
 
 void App::update_error(double now_ms) {
   const int n = renderer_->samples();
@@ -142,6 +146,7 @@ std::string App::error_fields() const {
   j += ",\"relMSESamples\":" + std::to_string(known ? error_history_.back().samples : 0);
   j += ",\"targetRelMSE\":" + json_number(target_relmse_);
   j += ",\"targetReachedAt\":" + std::to_string(target_stop_at_);
+  j += ",\"denoise\":" + json_number(denoise_ ? denoise_blend() : 0.0);
   j += ",\"estimates\":" + std::to_string(estimates_) + ",\"estimateMs\":" + json_number(estimate_ms_);
   j += ",\"errorHistory\":[";
   for (size_t i = 0; i < error_history_.size(); ++i)

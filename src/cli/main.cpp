@@ -16,6 +16,7 @@
 #include "render/pacing.h"
 #include "gpu/gl.h"
 #include "platform/egl.h"
+#include "render/denoise.h"
 #include "render/pipeline.h"
 
 namespace pt::cli {
@@ -30,12 +31,64 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+bool write_image(const std::string& out, int w, int h, const std::vector<float>& radiance, const std::vector<uint8_t>& png) {
+  if (ends_with(out, ".png")) return write_png(out, w, h, png);
+  if (ends_with(out, ".hdr")) return write_hdr(out, w, h, radiance);
+  return write_pfm(out, w, h, radiance);
+}
+
+// --denoise: the denoiser's cost (the median of 3 runs, waited for, after one that builds
+// its programs), its images and the auxiliaries. false when a file cannot be written.
+bool denoise_outputs(const Options& o, Renderer& r, const ErrorEstimate& est) {
+  r.denoiser().params = o.denoise_params;
+  const float automatic = denoise_weight(est.rel_mse, est.known);
+  const float weight = o.denoise_weight >= 0.0f ? o.denoise_weight : automatic;
+  r.denoised(weight);
+  glFinish();
+  std::vector<double> ms;
+  for (int i = 0; i < 3; ++i) {
+    const auto t = std::chrono::steady_clock::now();
+    r.denoiser().run(r.accumulator(), weight, r.vertex_array());
+    glFinish();
+    ms.push_back(seconds_since(t) * 1e3);
+  }
+  std::sort(ms.begin(), ms.end());
+  std::printf("denoised: blend weight %.4f (from the estimated relMSE: %.4f), %d iterations in %.2f ms (median of 3, %.2f..%.2f)\n",
+              weight, automatic, r.denoiser().params.iterations, ms[1], ms[0], ms[2]);
+  RenderSettings s = r.settings();
+  s.denoise = weight;  // read_display shows the denoised image (weight 0: the raw one, the same bits)
+  r.set_settings(s);
+  const std::vector<float> img = r.read_denoised(weight);
+  for (const std::string& out : o.outs_denoised) {
+    if (!write_image(out, o.width, o.height, img, ends_with(out, ".png") ? r.read_display() : std::vector<uint8_t>())) {
+      std::fprintf(stderr, "pathtracer: cannot write %s\n", out.c_str());
+      return false;
+    }
+    std::printf("wrote %s (denoised)\n", out.c_str());
+  }
+  if (!o.out_aux.empty()) {
+    const std::vector<float> a0 = r.accumulator().read_aux(0), a1 = r.accumulator().read_aux(1);
+    std::vector<float> depth(a0.size());
+    for (size_t i = 0; i < a0.size(); i += 4) depth[i] = depth[i + 1] = depth[i + 2] = a0[i + 3];
+    const std::pair<std::string, const std::vector<float>*> files[3] = {{"-albedo.pfm", &a0}, {"-normal.pfm", &a1}, {"-depth.pfm", &depth}};
+    for (const auto& [suffix, px] : files) {
+      if (!write_pfm(o.out_aux + suffix, o.width, o.height, *px)) {
+        std::fprintf(stderr, "pathtracer: cannot write %s%s\n", o.out_aux.c_str(), suffix.c_str());
+        return false;
+      }
+      std::printf("wrote %s%s\n", o.out_aux.c_str(), suffix.c_str());
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 int run_render(const Options& o) {
-  for (const std::string& out : o.outs)
-    if (!ends_with(out, ".png") && !ends_with(out, ".hdr") && !ends_with(out, ".pfm"))
-      usage_error("--out must end in .png, .hdr or .pfm");
+  for (const std::vector<std::string>* outs : {&o.outs, &o.outs_denoised})
+    for (const std::string& out : *outs)
+      if (!ends_with(out, ".png") && !ends_with(out, ".hdr") && !ends_with(out, ".pfm"))
+        usage_error("--out and --out-denoised must end in .png, .hdr or .pfm");
   const auto tl = std::chrono::steady_clock::now();
   const std::unique_ptr<ScenePipeline> pipe = read_scene(o);  // before GL: bad input fails fast
   const Scene& scene = pipe->scene();
@@ -110,16 +163,13 @@ int run_render(const Options& o) {
     std::printf("auto exposure: %.4f\n", settings.exposure);
   }
   for (const std::string& out : o.outs) {
-    bool ok = false;
-    if (ends_with(out, ".png")) ok = write_png(out, o.width, o.height, r.read_display());
-    if (ends_with(out, ".hdr")) ok = write_hdr(out, o.width, o.height, radiance);
-    if (ends_with(out, ".pfm")) ok = write_pfm(out, o.width, o.height, radiance);
-    if (!ok) {
+    if (!write_image(out, o.width, o.height, radiance, ends_with(out, ".png") ? r.read_display() : std::vector<uint8_t>())) {
       std::fprintf(stderr, "pathtracer: cannot write %s\n", out.c_str());
       return 1;
     }
     std::printf("wrote %s\n", out.c_str());
   }
+  if (settings.aux && !denoise_outputs(o, r, est)) return 1;
   return st.bad == 0 && counters.bad_samples == 0 ? 0 : 3;
 }
 

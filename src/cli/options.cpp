@@ -37,6 +37,12 @@ const char* const kUsage =
     "        (then --spp, if given, and --seconds still cap it)\n"
     "        --out .png is tone-mapped, .hdr/.pfm linear radiance (--out may repeat);\n"
     "        --exposure X multiplies before the tone map, 'auto' maps the log-average to 0.18\n"
+    "        --denoise: the camera pass also writes first-hit albedo, normal and depth, and the\n"
+    "        a-trous denoiser (docs/denoise.md) filters the image; --out stays the raw (unbiased) mean,\n"
+    "        --out-denoised FILE (.png/.hdr/.pfm, may repeat; implies --denoise) writes the denoised one,\n"
+    "        blended with the raw by --denoise-weight W (0..1; default auto: from the estimated relMSE);\n"
+    "        --out-aux PREFIX writes PREFIX-albedo.pfm, PREFIX-normal.pfm, PREFIX-depth.pfm (implies --denoise);\n"
+    "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L (default 5,1,128,4: SVGF's) for tuning\n"
     "watch:  re-loads SCENE.xml when it or a file it references changes and re-renders to --out,\n"
     "        replaced atomically at 1, 2, 4, ... spp; a broken edit prints file:line and keeps the last image\n"
     "bench:  renders for S seconds; at 1, 2, 4, ... spp records time, relMSE and RMSE\n"
@@ -111,6 +117,24 @@ Options parse_options(int argc, char** argv, bool bench) {
       o.target_relmse = parse_positive(next(), "--target-relmse");
     } else if (!bench && a == "--out") {
       o.outs.push_back(next());
+    } else if (!bench && (a == "--denoise" || a == "--out-denoised" || a == "--out-aux")) {
+      o.settings.aux = true;
+      if (a == "--out-denoised") o.outs_denoised.push_back(next());
+      if (a == "--out-aux") o.out_aux = next();
+    } else if (!bench && a == "--denoise-params") {
+      const char* v = next();
+      DenoiseParams& d = o.denoise_params;
+      if (std::sscanf(v, "%d,%f,%f,%f", &d.iterations, &d.sigma_z, &d.sigma_n, &d.sigma_l) != 4 || d.iterations < 0 || d.iterations > 12)
+        usage_error(std::string("bad --denoise-params: ") + v);
+      o.settings.aux = true;
+    } else if (!bench && a == "--denoise-weight") {
+      const std::string v = next();
+      o.settings.aux = true;
+      if (v != "auto") {
+        char* end = nullptr;
+        o.denoise_weight = std::strtof(v.c_str(), &end);
+        if (v.empty() || *end || !(o.denoise_weight >= 0.0f && o.denoise_weight <= 1.0f)) usage_error("bad --denoise-weight: " + v);
+      }
     } else if (!bench && a == "--exposure") {
       const char* v = next();
       o.auto_exposure = !std::strcmp(v, "auto");

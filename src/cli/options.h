@@ -17,6 +17,12 @@ struct Options {
   int per_pass = 0;     // 0: adapt the draw size to the measured time
   std::vector<std::string> outs;  // render: --out may repeat (default out.png)
   bool auto_exposure = false;
+  // render: the denoiser (--denoise; --out-denoised implies it): its images, its blend
+  // weight (< 0: from the estimated relMSE, render/denoise.h), the auxiliaries' prefix.
+  std::vector<std::string> outs_denoised;
+  float denoise_weight = -1.0f;
+  std::string out_aux;
+  DenoiseParams denoise_params;  // --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L (tuning)
   RenderSettings settings;
   std::vector<std::string> given;  // the flags given: they win over the scene's <Render>
   // bench

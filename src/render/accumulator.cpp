@@ -2,6 +2,7 @@
 #include "render/accumulator.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "render/renderer.h"
 #include "render/texture_units.h"
@@ -22,14 +23,27 @@ Accumulator::Accumulator() {
   throw GlError("this GPU cannot render to floating-point textures (EXT_color_buffer_float is missing)");
 }
 
+void Accumulator::set_aux(bool on) {
+  if (on == aux_) return;
+  aux_ = on;
+  if (width_ > 0) resize(width_, height_);
+}
+
 void Accumulator::resize(int width, int height) {
   width_ = width;
   height_ = height;
   for (int i = 0; i < 2; ++i) {
     accum_[i] = Texture(width, height, format_, nullptr);
     stats_[i] = Texture(width, height, format_, nullptr);
-    var_[i] = Texture(width, height, format_, nullptr);
-    fbo_[i] = Framebuffer(accum_[i], stats_[i], var_[i]);
+    fbo_[i] = Framebuffer(accum_[i], stats_[i]);  // leaves it bound
+    for (int k = 0; k < 2; ++k) aux_tex_[k][i] = aux_ ? Texture(width, height, format_, nullptr) : Texture();
+    if (aux_) {
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, aux_tex_[0][i].id(), 0);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D, aux_tex_[1][i].id(), 0);
+      const GLenum bufs[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+      glDrawBuffers(4, bufs);
+      PT_GL_CHECK("glFramebufferTexture2D (auxiliaries)");
+    }
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   restart();
@@ -51,9 +65,7 @@ Accumulator::Tile Accumulator::begin_tile(const RenderSettings& s) {
     const float zero[4] = {0, 0, 0, 0};
     for (Framebuffer& f : fbo_) {
       glBindFramebuffer(GL_FRAMEBUFFER, f.id());
-      glClearBufferfv(GL_COLOR, 0, zero);
-      glClearBufferfv(GL_COLOR, 1, zero);
-      glClearBufferfv(GL_COLOR, 2, zero);
+      for (int a = 0; a < targets(); ++a) glClearBufferfv(GL_COLOR, a, zero);
       PT_GL_CHECK("glClearBufferfv");
     }
     needs_clear_ = false;
@@ -64,20 +76,25 @@ Accumulator::Tile Accumulator::begin_tile(const RenderSettings& s) {
 void Accumulator::bind_inputs(Program& p, const Tile& t) const {
   p.set("u_accum", int(kAccumUnit));
   p.set("u_stats_in", int(kStatsUnit));
-  p.set("u_var_in", int(kVarianceUnit));
   p.set("u_spp", t.spp);
   p.set("u_sample_base", samples_);
   p.set("u_blend", float(t.spp) / float(samples_ + t.spp));
   accum_[cur_].bind(kAccumUnit);
   stats_[cur_].bind(kStatsUnit);
-  var_[cur_].bind(kVarianceUnit);
+  if (aux_) {
+    p.set("u_aux0_in", int(kAux0Unit));
+    p.set("u_aux1_in", int(kAux1Unit));
+    aux_tex_[0][cur_].bind(kAux0Unit);
+    aux_tex_[1][cur_].bind(kAux1Unit);
+  }
 }
 
 #ifndef __EMSCRIPTEN__
 void Accumulator::bind_images() const {
   glBindImageTexture(0, accum_[1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glBindImageTexture(1, stats_[1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glBindImageTexture(2, var_[1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  for (int k = 0; k < 2 && aux_; ++k)
+    glBindImageTexture(GLuint(2 + k), aux_tex_[k][1 - cur_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   PT_GL_CHECK("glBindImageTexture (accumulator)");
 }
 #endif
@@ -91,16 +108,17 @@ int Accumulator::end_tile(const Tile& t) {
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_[1 - cur_].id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_[cur_].id());
-    for (int a = 0; a < 3; ++a) {
-      GLenum bufs[3] = {GL_NONE, GL_NONE, GL_NONE};
+    const int n = targets();
+    for (int a = 0; a < n; ++a) {
+      GLenum bufs[4] = {GL_NONE, GL_NONE, GL_NONE, GL_NONE};
       bufs[a] = GLenum(GL_COLOR_ATTACHMENT0 + a);
       glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + a));
-      glDrawBuffers(3, bufs);
+      glDrawBuffers(n, bufs);
       glBlitFramebuffer(t.x0, t.y0, t.x1, t.y1, t.x0, t.y0, t.x1, t.y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
       PT_GL_CHECK("glBlitFramebuffer (tile copy-back)");
     }
-    const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-    glDrawBuffers(3, all);
+    const GLenum all[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+    glDrawBuffers(n, all);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -115,9 +133,36 @@ int Accumulator::end_tile(const Tile& t) {
   return t.spp;
 }
 
-std::vector<float> Accumulator::read_radiance() const { return read_rgba_float(fbo_[cur_].id(), 0, width_, height_); }
+void Accumulator::read_mean_variance(std::vector<float>& mean, std::vector<float>& variance) const {
+  mean = read_rgba_float(fbo_[cur_].id(), 0, width_, height_);
+  variance = read_rgba_float(fbo_[cur_].id(), 1, width_, height_);
+  const float w[3] = {0.2126f, 0.7152f, 0.0722f};  // Rec. 709 luminance, as luminance() in common.glsl
+  for (size_t i = 0; i < mean.size(); i += 4) {
+    const float v[3] = {variance[i + 2], variance[i + 3], mean[i + 3]};
+    float sd = 0.0f;
+    for (int k = 0; k < 3; ++k) sd += w[k] * std::sqrt(std::max(v[k], 0.0f));
+    for (int k = 0; k < 3; ++k) variance[i + k] = v[k];
+    variance[i + 3] = 0.0f;
+    mean[i + 3] = sd * sd;
+  }
+}
 
-std::vector<float> Accumulator::read_variance() const { return read_rgba_float(fbo_[cur_].id(), 2, width_, height_); }
+std::vector<float> Accumulator::read_aux(int k) const {
+  if (!aux_) return {};
+  return read_rgba_float(fbo_[cur_].id(), 2 + k, width_, height_);
+}
+
+std::vector<float> Accumulator::read_radiance() const {
+  std::vector<float> mean, variance;
+  read_mean_variance(mean, variance);
+  return mean;
+}
+
+std::vector<float> Accumulator::read_variance() const {
+  std::vector<float> mean, variance;
+  read_mean_variance(mean, variance);
+  return variance;
+}
 
 RenderCounters Accumulator::counters() const {
   const std::vector<float> px = read_rgba_float(fbo_[cur_].id(), 1, width_, height_);

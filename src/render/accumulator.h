@@ -1,8 +1,9 @@
 // The running mean of radiance: two float targets in ping-pong (a draw reads one and
 // writes the other, which blends its samples into the mean), each with a statistics
-// attachment (NaN/Inf samples and rays, counted in the shader) and a variance attachment
-// (per RGB channel, the variance of the pixel's samples about their mean, combined pass by
-// pass in the shader: camera_pass.glsl; the error estimate reads it, core/metrics.h). A sweep adds samples to
+// attachment (NaN/Inf samples and rays, counted in the shader); per RGB channel the
+// variance of the pixel's samples about their mean, combined pass by pass in the shader
+// (camera_pass.glsl; the error estimate reads it, core/metrics.h), lives in the free
+// channels: red and green in the statistics' z and w, blue in the mean's alpha. A sweep adds samples to
 // every pixel; it may be drawn as bands of rows and a band as tiles of columns, the tile
 // copied back into the target it read (a blit), so the pair agrees again without a swap.
 #pragma once
@@ -30,6 +31,10 @@ class Accumulator {
   Accumulator();
   GLenum format() const { return format_; }
   void resize(int width, int height);  // the size was checked against the GPU's limits
+  // Two more targets for the denoiser's first-hit auxiliaries (camera_aux.glsl): 2 =
+  // (albedo, depth), 3 = (normal, 0); a change re-creates the targets and restarts.
+  void set_aux(bool on);
+  bool aux() const { return aux_; }
   int width() const { return width_; }
   int height() const { return height_; }
   void restart() {
@@ -56,27 +61,35 @@ class Accumulator {
   GLuint current_fbo() const { return fbo_[cur_].id(); }     // the current mean (attachment 0)
   const Texture& target_radiance() const { return accum_[1 - cur_]; }
   const Texture& target_stats() const { return stats_[1 - cur_]; }
-  const Texture& target_variance() const { return var_[1 - cur_]; }
 #ifndef __EMSCRIPTEN__
-  // The compute kernel's outputs: the targets as images 0 (mean), 1 (statistics), 2 (variance).
+  // The compute kernel's outputs: the targets as images 0 (mean), 1 (statistics), and with
+  // the auxiliaries 2 and 3.
   void bind_images() const;
 #endif
   // After the draw: swap or copy the tile back, move on; the samples per pixel added when
   // the tile completed a sweep, else 0.
   int end_tile(const Tile& t);
 
-  const Texture& radiance() const { return accum_[cur_]; }  // the current mean (display)
-  const Texture& variance() const { return var_[cur_]; }    // the samples' variance about it
-  std::vector<float> read_radiance() const;  // RGB radiance, A mean squared luminance; rows bottom to top
+  const Texture& radiance() const { return accum_[cur_]; }  // the current mean (display); A: blue's variance
+  const Texture& stats() const { return stats_[cur_]; }     // z, w: red's and green's variance
+  const Texture& aux0() const { return aux_tex_[0][cur_]; }  // with aux(): albedo, depth
+  const Texture& aux1() const { return aux_tex_[1][cur_]; }  // with aux(): shading normal
+  std::vector<float> read_aux(int k) const;  // aux0 (k = 0) or aux1 read back, rows bottom to top
+  // RGB radiance; A: a bound on the variance of the samples' luminance, (sum over channels
+  // of weight x standard deviation)^2, exact when the channels are proportional (the
+  // page's test of the mean reads it). Rows bottom to top.
+  std::vector<float> read_radiance() const;
   // Per pixel, RGB: the variance of its samples about their mean (sum of squared
   // deviations / samples, the biased sample variance); A: 0. Rows bottom to top.
   std::vector<float> read_variance() const;
+  // Both at once (two read-backs instead of four): mean RGB (A as read_radiance) and variance.
+  void read_mean_variance(std::vector<float>& mean, std::vector<float>& variance) const;
   RenderCounters counters() const;
 
  private:
   Texture accum_[2];
   Texture stats_[2];
-  Texture var_[2];
+  Texture aux_tex_[2][2];  // [which][ping-pong], with aux_ only
   Framebuffer fbo_[2];
   GLenum format_ = GL_RGBA32F;
   int cur_ = 0;
@@ -87,6 +100,8 @@ class Accumulator {
   int sweep_spp_ = 1;     // samples per pixel of the sweep in progress
   int epoch_ = 0;
   bool needs_clear_ = true;
+  bool aux_ = false;
+  int targets() const { return aux_ ? 4 : 2; }
   int width_ = 0, height_ = 0;
 };
 

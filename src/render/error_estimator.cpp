@@ -32,8 +32,8 @@ const ErrorEstimator::Snapshot* ErrorEstimator::usable(int samples) const {
 
 std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot* s) const {
   const int w = a.width(), h = a.height();
-  const std::vector<float> mean = a.read_radiance();
-  const std::vector<float> var = a.read_variance();
+  std::vector<float> mean, var;
+  a.read_mean_variance(mean, var);
   std::vector<float> snap;
   if (s) snap = read_rgba_float(s->fbo.id(), 0, w, h);
   return error_tiles(mean, var, s ? &snap : nullptr, w, h, a.samples(), kTile);

@@ -20,7 +20,7 @@ namespace {
 GlLimits checked_limits() {
   GlLimits l = GlLimits::query();
   l.require_units(int(kNumTextureUnits), "the integrator");
-  l.require_draw_buffers(2, "the accumulator (radiance and statistics targets)");
+  l.require_draw_buffers(2, "the accumulator (radiance and statistics targets)");  // 4 with the auxiliaries
   return l;
 }
 
@@ -54,6 +54,7 @@ Features Renderer::features_for(const Scene& scene, RenderMode mode) const {
   Features f = Features::of(scene);
   f.mode = mode;
   f.compute = using_compute();
+  f.aux = settings_.aux;
   return f;
 }
 
@@ -65,6 +66,7 @@ void Renderer::select_program() {
   Features f = features_;
   f.mode = settings_.mode;
   f.compute = using_compute();
+  f.aux = settings_.aux;
   ProgramCache::Entry& e = programs_.get(f);
   integrator_ = &e.program;
   source_ = &e.source;
@@ -140,9 +142,11 @@ void Renderer::set_settings(const RenderSettings& s) {
   a.spp_per_pass = b.spp_per_pass;
   a.band_rows = b.band_rows;
   a.band_columns = b.band_columns;
+  a.denoise = b.denoise;
   if (!(a == b)) restart();
-  const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute;
+  const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute || s.aux != settings_.aux;
   settings_ = s;
+  accum_.set_aux(s.aux);
   if (new_mode && have_scene_) {
     select_program();
     scene_.update_sh(settings_.mode);
@@ -213,13 +217,37 @@ int Renderer::step() {
   return added;
 }
 
-void Renderer::display(int x, int y) const { display_.draw(accum_.radiance(), settings_.tonemap, settings_.exposure, x, y, vao_); }
+void Renderer::display(int x, int y) const { display_.draw(shown(), settings_.tonemap, settings_.exposure, x, y, vao_); }
+
+const Texture& Renderer::shown() const {
+  if (!settings_.aux || settings_.denoise <= 0.0f || samples() == 0) return accum_.radiance();
+  // Filtered again at 1, 2, 4, ... samples of an image, not at every sweep: a run costs
+  // about one sample of path tracing on a CPU rasteriser (docs/denoise.md).
+  if (denoised_.epoch != accum_.epoch() || samples() >= 2 * denoised_.samples || denoiser_.output().width() != width() ||
+      denoiser_.output().height() != height())
+    denoised(settings_.denoise);
+  return denoiser_.output();
+}
+
+const Texture& Renderer::denoised(float weight) const {
+  if (denoised_.epoch != accum_.epoch() || denoised_.samples != samples() || denoised_.weight != weight ||
+      denoiser_.output().width() != width() || denoiser_.output().height() != height()) {
+    denoiser_.run(accum_, weight, vao_);
+    denoised_ = {accum_.epoch(), samples(), weight};
+  }
+  return denoiser_.output();
+}
+
+std::vector<float> Renderer::read_denoised(float weight) const {
+  denoised(weight);
+  return denoiser_.read();
+}
 
 std::vector<float> Renderer::read_radiance() const { return accum_.read_radiance(); }
 std::vector<float> Renderer::read_variance() const { return accum_.read_variance(); }
 
 std::vector<uint8_t> Renderer::read_display() const {
-  return display_.read(accum_.radiance(), settings_.tonemap, settings_.exposure, vao_);
+  return display_.read(shown(), settings_.tonemap, settings_.exposure, vao_);
 }
 
 }  // namespace pt

@@ -12,6 +12,7 @@
 #include "core/tonemap.h"
 #include "gpu/gl_objects.h"
 #include "render/accumulator.h"
+#include "render/denoise.h"
 #include "render/display.h"
 #include "render/error_estimator.h"
 #include "render/program_cache.h"
@@ -34,6 +35,8 @@ struct RenderSettings {
   RenderMode mode = RenderMode::PathTracer;  // a different program per mode
   int sampler = 3;       // 4D blocks of a path drawn from Owen-scrambled Sobol (0: all independent)
   bool compute = false;  // the compute kernel where the context has one (compute_supported())
+  bool aux = false;      // the camera pass also writes the denoiser's first-hit auxiliaries
+  float denoise = 0.0f;  // with aux: the denoised image's blend weight in display() (0: raw)
   ToneMap tonemap = ToneMap::Aces;
   float exposure = 1.0f;
   bool operator==(const RenderSettings&) const = default;
@@ -95,8 +98,19 @@ class Renderer {
     glFinish();
     restart();
   }
-  // Tone-mapped image into the bound draw framebuffer at viewport (x, y, w, h) = size().
+  // Tone-mapped image into the bound draw framebuffer at viewport (x, y, w, h) = size():
+  // with settings().aux and denoise > 0 the denoised one (shown()).
   void display(int x, int y) const;
+  // What display() and read_display() show: the mean, or with the denoiser on its image,
+  // filtered again at 1, 2, 4, ... samples and on a restart (in between the last one).
+  const Texture& shown() const;
+  // The denoiser's image of the current mean with blend weight w (needs settings().aux),
+  // filtered again only when the samples, the image or w changed; the accumulator is only read.
+  const Texture& denoised(float weight) const;
+  std::vector<float> read_denoised(float weight) const;  // RGB radiance, A 1
+  Denoiser& denoiser() const { return denoiser_; }
+  const Accumulator& accumulator() const { return accum_; }
+  GLuint vertex_array() const { return vao_; }  // the fullscreen triangle's (no attributes)
 
   int samples() const { return accum_.samples(); }
   bool converged() const { return settings_.sample_limit > 0 && samples() >= settings_.sample_limit; }
@@ -124,7 +138,8 @@ class Renderer {
   const GlLimits& limits() const { return limits_; }
   void override_limits(const GlLimits& l) { limits_ = l; }
 
-  // Linear radiance (RGB) and mean squared luminance (A), rows bottom to top.
+  // Linear radiance (RGB) and a bound on the variance of the samples' luminance (A, as
+  // Accumulator::read_radiance), rows bottom to top.
   std::vector<float> read_radiance() const;
   // Per pixel RGB, the variance of its samples about their mean (biased: / samples); A 0.
   std::vector<float> read_variance() const;
@@ -145,6 +160,8 @@ class Renderer {
   Display display_;
   Accumulator accum_;
   ErrorEstimator error_;  // snapshots of accum_'s mean for its error estimate
+  mutable Denoiser denoiser_;
+  mutable struct { int epoch = -1, samples = -1; float weight = -1.0f; } denoised_;  // what denoiser_ holds
   SceneTextures scene_;
   ProgramCache programs_;
   Features features_;

@@ -1,5 +1,6 @@
 // The texture units of the integrator and display programs, one list: the accumulator's
-// three inputs (mean, statistics, variance), the scene's record textures, its environment and image maps.
+// two inputs (mean, statistics; the variance in their free channels), the denoiser's
+// auxiliaries (albedo and depth, normal: with the first-hit auxiliaries on), the scene's record textures, its environment and image maps.
 #pragma once
 
 namespace pt {
@@ -7,7 +8,7 @@ namespace pt {
 enum TextureUnit {
   kAccumUnit = 0, kShapeUnit = 1, kMaterialUnit = 2, kLightUnit = 3, kStatsUnit = 4, kEnvUnit = 5, kEnvCdfUnit = 6,
   kNodeUnit = 7, kPrimUnit = 8, kVertexUnit = 9, kMapsUnit = 10, kUvUnit = 11, kTexinfoUnit = 12,
-  kVarianceUnit = 13, kNumTextureUnits = 14  // WebGL 2 guarantees 16 in a fragment shader
+  kAux0Unit = 13, kAux1Unit = 14, kNumTextureUnits = 15  // WebGL 2 guarantees 16 in a fragment shader
 };
 
 }  // namespace pt

@@ -26,6 +26,9 @@ struct Features {
   // only; the same code, run on every core: some GPUs, the H100 among them, give
   // fragment shaders a small part of their cores). A renderer setting too.
   bool compute = false;
+  // The camera pass also writes the denoiser's first-hit auxiliaries (camera_aux.glsl);
+  // a renderer setting too.
+  bool aux = false;
   bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
   bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
   bool has_light(ShapeKind k) const { return lights >> int(k) & 1u; }
@@ -38,13 +41,14 @@ struct Features {
     return false;
   }
   uint64_t key() const {
-    return uint64_t(shapes) | uint64_t(compute) << 15 | uint64_t(lights | punctual << 10) << 16 | uint64_t(materials) << 32 |
-           uint64_t(motion) << 62 | uint64_t(env_map) << 63 | uint64_t(mode) << 60 |  // materials use bits 32..51
+    return uint64_t(shapes) | uint64_t(compute) << 15 | uint64_t(lights | punctual << 10) << 16 | uint64_t(aux) << 31 |
+           uint64_t(materials) << 32 | uint64_t(motion) << 62 | uint64_t(env_map) << 63 | uint64_t(mode) << 60 |  // materials use bits 32..51
            uint64_t(material_features) << 52;
   }
   static Features of(const Scene& scene);
 };
-static_assert(kNumShapeKinds <= 10 && kNumLightKinds <= 6 && kNumMaterialKinds <= 20 && kNumMaterialFeatures <= 8 && kNumRenderModes <= 4, "Features::key bits");
+static_assert(kNumShapeKinds <= 10 && kNumLightKinds <= 5 &&  // lights: bits 16..30, aux 31
+              kNumMaterialKinds <= 20 && kNumMaterialFeatures <= 8 && kNumRenderModes <= 4, "Features::key bits");
 
 class ShaderGenError : public std::runtime_error {
  public:

@@ -108,14 +108,15 @@ export function nativeMean(nativeBin, scenePath, w, h, samples, outPng) {
 }
 
 // The relative standard error of an image's mean luminance from the page's radiance
-// read-back (RGBA floats; alpha is each pixel's running mean of squared luminance).
+// read-back (RGBA floats; alpha bounds the variance of each pixel's samples' luminance:
+// Accumulator::read_radiance).
 export function meanStdError(px, samples) {
   let lum = 0, variance = 0;
   const n = px.length / 4;
   for (let i = 0; i < px.length; i += 4) {
     const l = 0.2126 * px[i] + 0.7152 * px[i + 1] + 0.0722 * px[i + 2];
     lum += l;
-    variance += Math.max(0, px[i + 3] - l * l);
+    variance += px[i + 3];
   }
   return Math.sqrt(variance / samples) / n / (lum / n);
 }

@@ -124,7 +124,6 @@ function trimmedSquaredChange(a, b) {
   return sum / keep;
 }
 
-// Standard error of the image's mean luminance from the per-pixel second moment (alpha).
 async function main() {
   mkdirSync(outDir, { recursive: true });
   for (const f of ["index.html", "pathtracer.js", "pathtracer.wasm", "pathtracer.data"])
@@ -142,11 +141,18 @@ async function main() {
 
     // Convergence: exact checkpoints through the sample limit (raising it continues the
     // same estimate, it does not restart).
-    const checkpoints = [4, 8, 16, 32, spp], images = [], reached = [];
+    const checkpoints = [4, 8, 16, 32, spp], images = [], reached = [], blends = [];
     for (const n of checkpoints) {
-      reached.push((await renderTo(page, n)).samples);
+      const st = await renderTo(page, n);
+      reached.push(st.samples);
+      blends.push(st.denoise);
       images.push(await page.evaluate(() => window.ptRadiance()));
     }
+    // The denoiser is on by default and its blend weight falls as the estimate does
+    // (render/denoise.h); the radiance above is the raw mean all the same.
+    console.log(`# denoiser blend weight at ${checkpoints.join(",")} spp: ${blends.map((b) => b.toFixed(3)).join(" ")}`);
+    check("the denoiser is on by default while the image is noisy", blends[0] > 0 && blends.every((b, i) => i === 0 || b <= blends[i - 1]),
+          `weights ${blends.join(" ")}`);
     const changes = checkpoints.slice(1).map((_, i) => trimmedSquaredChange(images[i], images[i + 1]));
     const ratio = changes[changes.length - 1] / changes[0];
     const steps = changes.slice(1).map((c, i) => c / changes[i]);

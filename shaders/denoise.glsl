@@ -1,0 +1,147 @@
+// denoise.glsl: the edge-aware a-trous wavelet denoiser (render/denoise.h), three kinds of
+// fragment pass chosen by PT_DENOISE_PASS (one small program each):
+//   0 prepare: radiance / albedo (demodulation) and the variance of that pixel mean's
+//     luminance, from the accumulator's per-channel variance of the samples (v / (n - 1):
+//     core/metrics.h); below 4 samples from the 5x5 neighbourhood instead (SVGF's
+//     spatial estimate for short histories), the per-pixel one being too noisy or 0;
+//   1 one a-trous iteration (Dammertz et al. 2010) with step u_step: a 5x5 B3-spline
+//     kernel whose taps are weighted by SVGF's edge-stopping functions (Schied et al.
+//     2017, eq. 3-5): depth (against the depth's screen gradient), shading normal
+//     (cosine^128) and luminance (against the standard deviation of the pixel's
+//     luminance, its variance blurred 3x3), the variance filtered along with squared
+//     weights (SVGF eq. 2);
+//   2 finish: re-modulated by the albedo and blended with the raw mean by u_weight.
+// The output of every pass moves the pixel's own value by a weighted mean of differences
+// (x_p + sum w (x_q - x_p) / sum w), and the finish adds weight * albedo * (filtered -
+// own demodulated value) to the raw radiance: a constant image, or weight 0, comes back
+// bit for bit.
+uniform highp sampler2D u_radiance;  // accumulator: mean RGB, A the blue channel's variance
+uniform highp sampler2D u_stats;     // accumulator: z, w the red and green channels' variance
+uniform highp sampler2D u_aux0;      // albedo RGB, view depth
+uniform highp sampler2D u_aux1;      // shading normal (mean over the samples)
+uniform highp sampler2D u_input;     // passes 1, 2: demodulated RGB and its luminance variance
+uniform int u_samples;
+uniform int u_step;                  // pass 1: the a-trous step, 1, 2, 4, ...
+uniform float u_weight;              // pass 2: blend weight of the filtered image
+uniform float u_sigma_z, u_sigma_n, u_sigma_l;
+out vec4 o_color;
+
+const vec3 kLum = vec3(0.2126, 0.7152, 0.0722);
+const float kMinAlbedo = 0.01;  // demodulation by max(albedo, this): black surfaces, lights
+
+ivec2 g_size;
+bool inside(ivec2 q) { return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, g_size)); }
+vec3 safe_albedo(ivec2 q) { return max(texelFetch(u_aux0, q, 0).rgb, vec3(kMinAlbedo)); }
+vec3 demodulated(ivec2 q) { return texelFetch(u_radiance, q, 0).rgb / safe_albedo(q); }
+float depth(ivec2 q) { return texelFetch(u_aux0, q, 0).a; }
+
+// The luminance variance of pixel q's mean, demodulated, from the per-channel variance of
+// its samples: (sum w_c sd_c)^2, exact for proportional channels, else an upper bound.
+float pixel_variance(ivec2 q) {
+  vec3 v = vec3(texelFetch(u_stats, q, 0).zw, texelFetch(u_radiance, q, 0).a) / float(max(u_samples - 1, 1));
+  float sd = dot(kLum, sqrt(max(v, vec3(0.0))) / safe_albedo(q));
+  return sd * sd;
+}
+
+// The depth's screen gradient at p, per axis the smaller one-sided difference (an edge
+// does not make a surface look steep).
+vec2 depth_gradient(ivec2 p) {
+  float z = depth(p);
+  vec2 g = vec2(1.0e30);
+  for (int k = 0; k < 2; ++k) {
+    ivec2 e = k == 0 ? ivec2(1, 0) : ivec2(0, 1);
+    if (inside(p + e)) g[k] = min(g[k], abs(depth(p + e) - z));
+    if (inside(p - e)) g[k] = min(g[k], abs(depth(p - e) - z));
+    if (g[k] > 1.0e29) g[k] = 0.0;
+  }
+  return g;
+}
+
+// What the geometric weights need of pixel p, fetched once.
+struct Guide {
+  float z;     // depth
+  vec2 grad;   // depth_gradient
+  vec3 n;      // unit normal (when valid)
+  bool valid;  // a surface: the ray did not leave the scene
+};
+Guide guide(ivec2 p) {
+  vec3 n = texelFetch(u_aux1, p, 0).xyz;
+  bool valid = dot(n, n) > 0.25;  // else the ray left the scene (or an edge of one)
+  return Guide(depth(p), depth_gradient(p), valid ? normalize(n) : n, valid);
+}
+
+// SVGF's geometric edge-stopping weight of tap q for pixel p (0 across a sky edge).
+float geometry_weight(Guide g, ivec2 p, ivec2 q) {
+  vec3 nq = texelFetch(u_aux1, q, 0).xyz;
+  bool valid_q = dot(nq, nq) > 0.25;
+  if (valid_q != g.valid) return 0.0;
+  float wn = g.valid ? pow(max(dot(g.n, normalize(nq)), 0.0), u_sigma_n) : 1.0;
+  float zq = depth(q);
+  return wn * exp(-abs(g.z - zq) / (u_sigma_z * dot(g.grad, abs(vec2(q - p))) + 1.0e-3 * abs(g.z) + 1.0e-6));
+}
+
+const float kB3[3] = float[3](0.375, 0.25, 0.0625);  // the B3 spline: 1/16 1/4 3/8 1/4 1/16
+
+void main() {
+  g_size = textureSize(u_radiance, 0);
+  ivec2 p = ivec2(gl_FragCoord.xy);
+#if PT_DENOISE_PASS == 0
+  vec3 c = demodulated(p);
+  float var = pixel_variance(p);
+  if (u_samples < 4) {
+    // The luminance's variance over the geometrically similar 5x5 neighbours, a sample
+    // each: the pixels' own estimate has (n - 1) < 3 degrees of freedom.
+    Guide g = guide(p);
+    float sw = 0.0, m1 = 0.0, m2 = 0.0;
+    for (int y = -2; y <= 2; ++y)
+      for (int x = -2; x <= 2; ++x) {
+        ivec2 q = p + ivec2(x, y);
+        if (!inside(q)) continue;
+        float w = geometry_weight(g, p, q);
+        if (w == 0.0) continue;
+        float l = dot(kLum, demodulated(q));
+        sw += w, m1 += w * l, m2 += w * l * l;
+      }
+    m1 /= sw;
+    var = max(m2 / sw - m1 * m1, 0.0) / float(max(u_samples, 1));  // of the mean of n
+  }
+  o_color = vec4(c, var);
+#elif PT_DENOISE_PASS == 1
+  vec4 cp = texelFetch(u_input, p, 0);
+  float lp = dot(kLum, cp.rgb);
+  // The variance for the luminance weight, blurred 3x3 (SVGF: a Gaussian prefilter).
+  float gv = 0.0, gw = 0.0;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x) {
+      ivec2 q = p + ivec2(x, y);
+      if (!inside(q)) continue;
+      float w = (x == 0 ? 0.5 : 0.25) * (y == 0 ? 0.5 : 0.25);
+      gv += w * texelFetch(u_input, q, 0).a;
+      gw += w;
+    }
+  float sd = sqrt(max(gv / gw, 0.0));
+  Guide g = guide(p);
+  float sw = kB3[0] * kB3[0];  // the centre tap, weight 1 in every edge-stopping function
+  vec3 sdiff = vec3(0.0);
+  float svar = sw * sw * cp.a;
+  for (int y = -2; y <= 2; ++y)
+    for (int x = -2; x <= 2; ++x) {
+      if (x == 0 && y == 0) continue;
+      ivec2 q = p + ivec2(x, y) * u_step;
+      if (!inside(q)) continue;
+      float wg = geometry_weight(g, p, q);
+      if (wg == 0.0) continue;  // across an edge: the tap adds nothing
+      vec4 cq = texelFetch(u_input, q, 0);
+      float wl = exp(-abs(lp - dot(kLum, cq.rgb)) / (u_sigma_l * sd + 1.0e-10));
+      float w = kB3[abs(x)] * kB3[abs(y)] * wg * wl;
+      sw += w;
+      sdiff += w * (cq.rgb - cp.rgb);
+      svar += w * w * cq.a;
+    }
+  o_color = vec4(cp.rgb + sdiff / sw, svar / (sw * sw));
+#else
+  vec3 raw = texelFetch(u_radiance, p, 0).rgb;
+  vec3 filtered = texelFetch(u_input, p, 0).rgb;
+  o_color = vec4(raw + u_weight * safe_albedo(p) * (filtered - demodulated(p)), 1.0);
+#endif
+}

@@ -1,0 +1,74 @@
+// The denoiser (issue 14): an edge-aware a-trous wavelet filter of the displayed image,
+// SVGF's spatial part (Schied et al. 2017, after Dammertz et al. 2010), in GLSL ES 3.00
+// fragment passes (shaders/denoise.glsl): the radiance is divided by the first-hit albedo,
+// filtered in 5 iterations of a 5x5 kernel whose taps stop at depth and normal edges and
+// at luminance differences large against the pixel's standard deviation (from the
+// accumulator's per-pixel variance), then multiplied by the albedo again. It needs the
+// camera pass's auxiliaries (RenderSettings::aux: albedo, normal, depth; camera_aux.glsl)
+// and reads the accumulator, never writes it: the running mean stays unbiased, and the
+// filtered image is blended with it by a weight that falls with the estimated relMSE
+// (denoise_weight), so a converged image is the raw one. Measured: docs/denoise.md.
+#pragma once
+#include <vector>
+
+#include "gpu/program.h"
+#include "gpu/texture.h"
+
+namespace pt {
+
+class Accumulator;
+
+// What the filter reads, in the accumulator's layout (accumulator.h, camera_aux.glsl):
+// radiance = (mean RGB, blue's sample variance), stats = (-, -, red's, green's), aux0 =
+// (albedo, depth), aux1 = (normal, -); all the same size, n samples per pixel.
+struct DenoiseInputs {
+  const Texture* radiance;
+  const Texture* stats;
+  const Texture* aux0;
+  const Texture* aux1;
+  int samples;
+  GLenum format;  // of the intermediate and output textures
+  static DenoiseInputs of(const Accumulator& a);
+};
+
+struct DenoiseParams {
+  int iterations = 5;     // a-trous steps 1, 2, 4, ...: a footprint of 4 * 2^iterations - 3 pixels
+  float sigma_z = 1.0f;   // depth: SVGF's values
+  float sigma_n = 128.0f; // normal: the exponent of the cosine
+  float sigma_l = 4.0f;   // luminance: standard deviations
+};
+
+// The blend weight of the filtered image given the raw image's estimated relMSE (the
+// renderer's own, core/metrics.h; no estimate yet: 1): 1 while the image is noisy, falling
+// log-linearly to 0 between kFadeHigh and kFadeLow, where the filter's own error (its
+// bias at edges and in the lighting's gradients) is no longer below the raw image's: in
+// the Cornell box at 128x128 between 256 and 1024 spp (docs/denoise.md).
+constexpr double kFadeHigh = 1e-3, kFadeLow = 1e-4;
+float denoise_weight(double estimated_rel_mse, bool known = true);
+
+class Denoiser {
+ public:
+  DenoiseParams params;
+  // Filters the accumulator's current mean (a.aux() must be on) into output(): raw +
+  // weight x (filtered - raw); weight 0 gives the raw mean bit for bit. vao: a vertex
+  // array for the fullscreen triangle (no attributes). Leaves the default framebuffer bound.
+  void run(const DenoiseInputs& in, float weight, GLuint vao);
+  void run(const Accumulator& a, float weight, GLuint vao) { run(DenoiseInputs::of(a), weight, vao); }
+  const Texture& output() const { return out_; }
+  std::vector<float> read() const;  // RGB the denoised radiance, A 1; rows bottom to top
+  double last_ms() const { return last_ms_; }  // CPU time of the last run's calls (not waited for)
+
+ private:
+  void pass(int kind, const Texture* input, const Framebuffer& target, const DenoiseInputs& in, GLuint vao, int step = 0,
+            float weight = 0.0f);
+  Program programs_[3];  // prepare, one iteration, finish
+  Texture tex_[2];
+  Framebuffer fbo_[2];
+  Texture out_;
+  Framebuffer out_fbo_;
+  int width_ = 0, height_ = 0;
+  GLenum format_ = 0;
+  double last_ms_ = 0.0;
+};
+
+}  // namespace pt

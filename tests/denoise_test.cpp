@@ -1,0 +1,164 @@
+// The denoiser (render/denoise.h): on synthetic inputs in the accumulator's layout, it
+// keeps a constant image bit for bit, does not blur across a depth step between two planes,
+// and lowers the variance of a noisy flat region by a stated factor; on a render, the
+// auxiliaries leave the raw image byte-identical in both kernels and the filter only reads
+// the accumulation.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "gl_context.h"
+#include "render/denoise.h"
+#include "scene_builders.h"
+
+using namespace pt;
+
+namespace {
+
+// The four input images of a w x h test, RGBA each, rows bottom to top.
+struct Synthetic {
+  int w, h, samples = 16;
+  std::vector<float> radiance, stats, aux0, aux1;
+  Synthetic(int w_, int h_) : w(w_), h(h_), radiance(size_t(w_) * h_ * 4), stats(radiance.size()), aux0(radiance.size()), aux1(radiance.size()) {}
+  // Pixel (x, y): mean grey radiance `L`, the variance of that mean `var_mean`, albedo,
+  // depth and a normal facing the camera.
+  void set(int x, int y, float L, float var_mean, float albedo, float depth) {
+    const size_t i = (size_t(y) * w + x) * 4;
+    const float v = var_mean * float(samples - 1);  // the samples' variance, as accumulated
+    for (int k = 0; k < 3; ++k) radiance[i + k] = L, aux0[i + k] = albedo;
+    radiance[i + 3] = v;
+    stats[i + 2] = stats[i + 3] = v;
+    aux0[i + 3] = depth;
+    aux1[i + 2] = 1.0f;
+  }
+  float at(const std::vector<float>& img, int x, int y) const { return img[(size_t(y) * w + x) * 4 + 1]; }
+  // The denoised image with blend weight `weight`.
+  std::vector<float> denoise(float weight = 1.0f, DenoiseParams params = {}) const {
+    Texture r(w, h, GL_RGBA32F, radiance.data()), s(w, h, GL_RGBA32F, stats.data()), a0(w, h, GL_RGBA32F, aux0.data()),
+        a1(w, h, GL_RGBA32F, aux1.data());
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    Denoiser d;
+    d.params = params;
+    d.run(DenoiseInputs{&r, &s, &a0, &a1, samples, GL_RGBA32F}, weight, vao);
+    std::vector<float> out = d.read();
+    glDeleteVertexArrays(1, &vao);
+    return out;
+  }
+};
+
+bool same_rgb(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); i += 4)
+    if (std::memcmp(&a[i], &b[i], 3 * sizeof(float)) != 0) return false;
+  return true;
+}
+
+// The noisy step: left half radiance 0.6 at depth 1, right half 0.4 at `right_depth`, the
+// same albedo and normal, Gaussian noise of standard deviation 0.1 (the reported one).
+Synthetic noisy_step(float right_depth) {
+  Synthetic s(64, 32);
+  std::mt19937 rng(7);
+  std::normal_distribution<float> noise(0.0f, 0.1f);
+  for (int y = 0; y < s.h; ++y)
+    for (int x = 0; x < s.w; ++x) s.set(x, y, (x < 32 ? 0.6f : 0.4f) + noise(rng), 0.01f, 0.5f, x < 32 ? 1.0f : right_depth);
+  return s;
+}
+
+double column_mean(const Synthetic& s, const std::vector<float>& img, int x) {
+  double m = 0;
+  for (int y = 0; y < s.h; ++y) m += s.at(img, x, y);
+  return m / s.h;
+}
+
+}  // namespace
+
+TEST_CASE("denoiser: a constant image comes back bit for bit, and weight 0 is the raw image", "[gpu][denoise]") {
+  test_gl();
+  Synthetic s(40, 30);
+  for (int y = 0; y < s.h; ++y)
+    for (int x = 0; x < s.w; ++x) s.set(x, y, 0.3f, 0.02f, 0.7f, 1.0f + 0.05f * x);  // a slanted plane
+  CHECK(same_rgb(s.denoise(), s.radiance));
+  Synthetic n = noisy_step(1.0f);
+  CHECK(same_rgb(n.denoise(0.0f), n.radiance));
+  CHECK_FALSE(same_rgb(n.denoise(1.0f), n.radiance));
+}
+
+TEST_CASE("denoiser: no blur across a depth step between two planes", "[gpu][denoise]") {
+  test_gl();
+  // Radiance 0.6 | 0.4, noise 0.1: the luminance weight alone lets the step through
+  // (a difference of 2 standard deviations, sigma_l 4), so only the depth stops it.
+  const Synthetic step = noisy_step(2.0f), flat = noisy_step(1.0f);
+  const std::vector<float> a = step.denoise(), b = flat.denoise();
+  // The two columns either side of the step: the noise's standard error over a column
+  // before filtering is 0.1 / sqrt(32) = 0.018; filtered within the plane, less.
+  for (int x : {30, 31, 32, 33}) {
+    const double truth = x < 32 ? 0.6 : 0.4;
+    INFO("column " << x << ": with the depth step " << column_mean(step, a, x) << ", on one plane " << column_mean(flat, b, x));
+    CHECK(std::abs(column_mean(step, a, x) - truth) < 0.03);
+  }
+  // Without the depth step the same filter does blur it (the test can see a blur).
+  CHECK(column_mean(flat, b, 31) - column_mean(flat, b, 32) < 0.12);
+}
+
+TEST_CASE("denoiser: a noisy flat region's variance falls at least 25-fold", "[gpu][denoise]") {
+  test_gl();
+  Synthetic s(64, 64);
+  std::mt19937 rng(3);
+  std::normal_distribution<float> noise(0.0f, 0.1f);
+  for (int y = 0; y < s.h; ++y)
+    for (int x = 0; x < s.w; ++x) s.set(x, y, 0.5f + noise(rng), 0.01f, 0.8f, 2.0f);
+  const std::vector<float> out = s.denoise();
+  auto variance = [&](const std::vector<float>& img) {  // over the inner 32x32 (no border)
+    double m = 0, m2 = 0;
+    for (int y = 16; y < 48; ++y)
+      for (int x = 16; x < 48; ++x) m += s.at(img, x, y), m2 += double(s.at(img, x, y)) * s.at(img, x, y);
+    m /= 1024.0;
+    return m2 / 1024.0 - m * m;
+  };
+  const double before = variance(s.radiance), after = variance(out);
+  INFO("variance before " << before << ", after " << after << ": " << before / after << "x lower");
+  CHECK(before / after > 25.0);
+}
+
+TEST_CASE("denoiser: the auxiliaries leave the raw image byte-identical; the filter only reads it", "[gpu][denoise]") {
+  test_gl();
+  Material wall;  // Lambertian, emitting: a noisy image with a known albedo everywhere
+  wall.tint = glm::vec3(0.6f);
+  wall.emission = glm::vec3(1.0f);
+  const Scene scene = closed_room(wall);
+  for (bool compute : {false, true}) {
+    std::vector<float> raw[2];
+    for (int aux = 0; aux < 2; ++aux) {
+      Renderer r;
+      r.resize(32, 24);
+      RenderSettings st;
+      st.compute = compute;
+      st.aux = aux == 1;
+      st.sample_limit = 6;
+      st.spp_per_pass = 2;
+      st.band_rows = 7;  // tiles: the copy-back covers the auxiliaries too
+      st.band_columns = 13;
+      r.set_settings(st);
+      r.set_scene(scene);
+      while (!r.converged()) r.step();
+      raw[aux] = r.read_radiance();
+      if (aux) {
+        const std::vector<float> albedo = r.accumulator().read_aux(0), normal = r.accumulator().read_aux(1);
+        double mean_albedo = 0, mean_normal = 0;
+        for (size_t i = 0; i < albedo.size(); i += 4)
+          mean_albedo += albedo[i + 1], mean_normal += std::sqrt(normal[i] * normal[i] + normal[i + 1] * normal[i + 1] + normal[i + 2] * normal[i + 2]);
+        CHECK(mean_albedo / double(albedo.size() / 4) == Approx(0.6).epsilon(1e-5));  // every first hit a wall
+        CHECK(mean_normal / double(albedo.size() / 4) > 0.98);  // unit normals, averaged only at edges
+        const std::vector<float> denoised = r.read_denoised(1.0f);
+        CHECK(r.read_radiance() == raw[aux]);  // the accumulation is untouched
+        CHECK_FALSE(same_rgb(denoised, raw[aux]));
+        CHECK(same_rgb(r.read_denoised(0.0f), raw[aux]));
+      }
+    }
+    INFO((compute ? "compute" : "fragment") << " kernel");
+    CHECK(raw[0] == raw[1]);
+  }
+}
