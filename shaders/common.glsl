@@ -14,7 +14,7 @@ struct Hit { float t; int id; vec3 n; vec3 p; int prim; };
 Hit no_hit() { return Hit(T_INF, -1, vec3(0.0), vec3(0.0), -1); }
 
 int g_rays;    // rays cast by this fragment (counted in trace_scene)
-float g_time;  // the camera sample's time in the shutter interval (motion blur)
+float g_time = 0.0;  // the camera sample's time in the shutter interval (motion blur; 0 in tests of a part)
 
 float max3(vec3 v) { return max(max(v.x, v.y), v.z); }
 float max_abs(vec3 v) { return max3(abs(v)); }

@@ -31,7 +31,7 @@ GlslKernel box_kernel() {
   return GlslKernel(
       "uniform vec3 u_dir[8];\n"
       "vec4 kernel(vec4 x, int i) {\n"
-      "  ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-1.0), vec3(1.0)));\n"
+      "  ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-1.0), vec3(1.0), vec3(0.0)));\n"
       "  Hit h = no_hit();\n"
       "  Ray r = Ray(x.xyz, u_dir[int(x.w)]);\n  intersect_box(s, 0, r, prepare_box(r), h);\n"
       "  return h.id < 0 ? vec4(-1.0, 0.0, 0.0, 0.0) : vec4(h.t, h.n);\n}\n");
@@ -106,7 +106,7 @@ TEST_CASE("triangles: rays aimed exactly at shared edges and vertices find no cr
       "  float hgt = 1.0 + 3.0 * rand01(), rad = hgt * sqrt(rand01()), phi = TWO_PI * rand01();\n"
       "  vec3 o = x.xyz + vec3(rad * cos(phi), rad * sin(phi), hgt);\n"
       "  Ray r = Ray(o, normalize(x.xyz - o));\n  Hit h = no_hit();\n"
-      "  for (int k = 0; k < NT; ++k) {\n    ShapeRec s; s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(V[3 * k], V[3 * k + 1], V[3 * k + 2]));\n"
+      "  for (int k = 0; k < NT; ++k) {\n    ShapeRec s; s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(V[3 * k], V[3 * k + 1], V[3 * k + 2], vec3(0.0)));\n"
       "    intersect_triangle(s, k, r, prepare_triangle(r), h);\n  }\n  return vec4(float(h.id), h.t, 0.0, 0.0);\n}\n";
   GlslKernel k(body);
   // Targets: points on interior edges (shared by two triangles) and interior vertices.
@@ -377,7 +377,7 @@ TEST_CASE("a lone triangle's barycentrics (its uv) are finite when it is tiny", 
       "vec4 kernel(vec4 x, int i) {\n"
       "  ShapeRec s; s.kind = SHAPE_TRIANGLE;\n"
       "  vec3 v0 = x.w * vec3(1.0, 2.0, 3.0), v1 = v0 + x.w * vec3(1.0, 0.0, 0.0), v2 = v0 + x.w * vec3(0.3, 1.0, 0.2);\n"
-      "  s = with_triangle_rec(s, TriangleRec(v0, v1, v2));\n"
+      "  s = with_triangle_rec(s, TriangleRec(v0, v1, v2, vec3(0.0)));\n"
       "  vec3 b = barycentric_triangle(s, (v0 + v1 + v2) / 3.0);\n"
       "  return vec4(b, b.x + b.y + b.z);\n}\n");
   const std::vector<glm::vec4> out = k.run({{0, 0, 0, 1.0f}, {0, 0, 0, 1e-5f}, {0, 0, 0, 1e-9f}, {0, 0, 0, 1e-11f}, {0, 0, 0, 1e-15f}});

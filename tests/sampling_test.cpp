@@ -134,11 +134,11 @@ TEST_CASE("chi-square: light sampling of spheres, boxes, disks and triangles", "
   std::set<std::string> covered;  // the SHAPE_ names of the cases
   for (const C& c : {C{"sphere light (near, wide cone)", "s.kind = SHAPE_SPHERE; s = with_sphere_rec(s, SphereRec(vec3(0.3, -0.2, 1.5), 1.2, vec3(0.0)));"},
                      C{"sphere light (far, narrow cone)", "s.kind = SHAPE_SPHERE; s = with_sphere_rec(s, SphereRec(vec3(4.0, 0.3, 0.2), 1.0, vec3(0.0)));"},
-                     C{"box light (one face visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-1.0, -1.0, 0.5), vec3(1.0, 1.0, 2.0)));"},
-                     C{"box light (two faces visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-2.5, -1.0, 0.4), vec3(-0.4, 1.0, 2.0)));"},
-                     C{"box light (three faces visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.3, 0.4, 0.5), vec3(2.0, 2.0, 2.0)));"},
-                     C{"disk light (tilted)", "s.kind = SHAPE_DISK; s = with_disk_rec(s, DiskRec(vec3(0.4, -0.3, 1.2), 0.9, normalize(vec3(-0.2, 0.3, -1.0))));"},
-                     C{"triangle light", "s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(vec3(-1.0, -1.0, 1.0), vec3(0.0, 1.5, 1.0), vec3(1.0, -1.0, 0.6)));"}}) {
+                     C{"box light (one face visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-1.0, -1.0, 0.5), vec3(1.0, 1.0, 2.0), vec3(0.0)));"},
+                     C{"box light (two faces visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(-2.5, -1.0, 0.4), vec3(-0.4, 1.0, 2.0), vec3(0.0)));"},
+                     C{"box light (three faces visible)", "s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.3, 0.4, 0.5), vec3(2.0, 2.0, 2.0), vec3(0.0)));"},
+                     C{"disk light (tilted)", "s.kind = SHAPE_DISK; s = with_disk_rec(s, DiskRec(vec3(0.4, -0.3, 1.2), 0.9, normalize(vec3(-0.2, 0.3, -1.0)), vec3(0.0)));"},
+                     C{"triangle light", "s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(vec3(-1.0, -1.0, 1.0), vec3(0.0, 1.5, 1.0), vec3(1.0, -1.0, 0.6), vec3(0.0)));"}}) {
     const std::string setup = std::string("const vec3 P = vec3(0.0);\nShapeRec make_light() {\n  ShapeRec s;\n  s.material = 0; s.light = 0;\n  ") +
                               c.shape + "\n  return s;\n}\n" + density_helper;
     DirectionCase dc{setup, sample, "light_density(d)"};

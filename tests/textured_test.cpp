@@ -66,17 +66,17 @@ TEST_CASE("uv mappings: closed forms at known points", "[gpu][textured]") {
            {std::string(sphere) + "vec3 n = vec3(0, -1, 0); return vec4(uv_sphere(s, c + 2.0 * n, n), 0, 0);", {0, 0, 0, 0}},
            {std::string(sphere) + "vec3 n = normalize(vec3(1, 1, 0)); return vec4(uv_sphere(s, c + 2.0 * n, n), 0, 0);", {0, 0.75f, 0, 0}},
            // box [0,2]x[0,4]x[0,8]: every face spans [0, 1]^2
-           {"ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.0), vec3(2.0, 4.0, 8.0)));\n return vec4(uv_box(s, vec3(2, 1, 2), vec3(1, 0, 0)), uv_box(s, vec3(0, 1, 2), vec3(-1, 0, 0)));", {0.75f, 0.25f, 0.25f, 0.25f}},
-           {"ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.0), vec3(2.0, 4.0, 8.0)));\n return vec4(uv_box(s, vec3(1, 4, 6), vec3(0, 1, 0)), uv_box(s, vec3(1, 0, 6), vec3(0, -1, 0)));", {0.5f, 0.25f, 0.5f, 0.75f}},
-           {"ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.0), vec3(2.0, 4.0, 8.0)));\n return vec4(uv_box(s, vec3(0.5, 3, 8), vec3(0, 0, 1)), uv_box(s, vec3(0.5, 3, 0), vec3(0, 0, -1)));", {0.25f, 0.75f, 0.75f, 0.75f}},
+           {"ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.0), vec3(2.0, 4.0, 8.0), vec3(0.0)));\n return vec4(uv_box(s, vec3(2, 1, 2), vec3(1, 0, 0)), uv_box(s, vec3(0, 1, 2), vec3(-1, 0, 0)));", {0.75f, 0.25f, 0.25f, 0.25f}},
+           {"ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.0), vec3(2.0, 4.0, 8.0), vec3(0.0)));\n return vec4(uv_box(s, vec3(1, 4, 6), vec3(0, 1, 0)), uv_box(s, vec3(1, 0, 6), vec3(0, -1, 0)));", {0.5f, 0.25f, 0.5f, 0.75f}},
+           {"ShapeRec s; s.kind = SHAPE_BOX; s = with_box_rec(s, BoxRec(vec3(0.0), vec3(2.0, 4.0, 8.0), vec3(0.0)));\n return vec4(uv_box(s, vec3(0.5, 3, 8), vec3(0, 0, 1)), uv_box(s, vec3(0.5, 3, 0), vec3(0, 0, -1)));", {0.25f, 0.75f, 0.75f, 0.75f}},
            // plane: scene units in frame_from(normal): the floor has u = x, v = -z
-           {"vec3 nn = vec3(0, 1, 0); ShapeRec s; s.kind = SHAPE_PLANE; s = with_plane_rec(s, PlaneRec(nn, 0.0));\n vec4 t = tangent_plane(s, vec3(3, 0, -5), nn); return vec4(uv_plane(s, vec3(3, 0, -5), nn), t.x, t.z);", {3, 5, 1, 0}},
-           {"vec3 nn = vec3(0, 0, 1); ShapeRec s; s.kind = SHAPE_PLANE; s = with_plane_rec(s, PlaneRec(nn, 2.0));\n return vec4(uv_plane(s, vec3(3, 4, 2), nn), 0, 0);", {3, 4, 0, 0}},
+           {"vec3 nn = vec3(0, 1, 0); ShapeRec s; s.kind = SHAPE_PLANE; s = with_plane_rec(s, PlaneRec(nn, 0.0, vec3(0.0)));\n vec4 t = tangent_plane(s, vec3(3, 0, -5), nn); return vec4(uv_plane(s, vec3(3, 0, -5), nn), t.x, t.z);", {3, 5, 1, 0}},
+           {"vec3 nn = vec3(0, 0, 1); ShapeRec s; s.kind = SHAPE_PLANE; s = with_plane_rec(s, PlaneRec(nn, 2.0, vec3(0.0)));\n return vec4(uv_plane(s, vec3(3, 4, 2), nn), 0, 0);", {3, 4, 0, 0}},
            // triangle: barycentric interpolation of the vertex uv
-           {"ShapeRec s; s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(vec3(0), vec3(2, 0, 0), vec3(0, 2, 0)));\n UvRec t; t.uv0 = vec2(0, 0); t.uv1 = vec2(1, 0); t.uv2 = vec2(0, 1);\n"
+           {"ShapeRec s; s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(vec3(0), vec3(2, 0, 0), vec3(0, 2, 0), vec3(0.0)));\n UvRec t; t.uv0 = vec2(0, 0); t.uv1 = vec2(1, 0); t.uv2 = vec2(0, 1);\n"
             " UvRec q; q.uv0 = vec2(0.1, 0.2); q.uv1 = vec2(0.9, 0.2); q.uv2 = vec2(0.1, 1.0);\n vec3 p = vec3(1, 0.5, 0), n = vec3(0, 0, 1);\n"
             " return vec4(uv_triangle(s, t, p, n), uv_triangle(s, q, p, n));", {0.5f, 0.25f, 0.5f, 0.4f}},
-           {"ShapeRec s; s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(vec3(0), vec3(2, 0, 0), vec3(0, 2, 0)));\n UvRec t; t.uv0 = vec2(0, 0); t.uv1 = vec2(-1, 0); t.uv2 = vec2(0, 1);\n"
+           {"ShapeRec s; s.kind = SHAPE_TRIANGLE; s = with_triangle_rec(s, TriangleRec(vec3(0), vec3(2, 0, 0), vec3(0, 2, 0), vec3(0.0)));\n UvRec t; t.uv0 = vec2(0, 0); t.uv1 = vec2(-1, 0); t.uv2 = vec2(0, 1);\n"
             " vec4 a = tangent_triangle(s, t, vec3(0.5), vec3(0, 0, 1)); return vec4(a.x, a.y, a.z, a.w);", {-1, 0, 0, -1}},
        }) {
     // Sphere uv go through atan (GPU transcendentals: about 1e-6 here, less exact elsewhere).
@@ -98,9 +98,9 @@ TEST_CASE("uv mappings: the tangent frame follows the uv gradient on every shape
       "  if (kind == 3) { s.kind = SHAPE_TRIANGLE; sa = vec3(0.0); sb = vec3(2.0, 0.5, 0.0); sc = vec3(0.3, 1.5, 1.0); n = normalize(cross(sb - sa, sc - sa));\n"
       "    float r = 0.2 + 0.5 * rand01(); p = sa + r * (sb - sa) * 0.5 + r * (sc - sa) * 0.5; }\n"
       "  if (kind == 0) s = with_sphere_rec(s, SphereRec(sa, sr, vec3(0.0)));\n"
-      "  if (kind == 1) s = with_box_rec(s, BoxRec(sa, sb));\n"
-      "  if (kind == 2) s = with_plane_rec(s, PlaneRec(sa, sr));\n"
-      "  if (kind == 3) s = with_triangle_rec(s, TriangleRec(sa, sb, sc));\n"
+      "  if (kind == 1) s = with_box_rec(s, BoxRec(sa, sb, vec3(0.0)));\n"
+      "  if (kind == 2) s = with_plane_rec(s, PlaneRec(sa, sr, vec3(0.0)));\n"
+      "  if (kind == 3) s = with_triangle_rec(s, TriangleRec(sa, sb, sc, vec3(0.0)));\n"
       "  SurfaceUv su = surface_uv(s, Hit(1.0, 0, n, p, -1));\n"
       "  if (kind == 3) { su.uv = uv_triangle(s, t, p, n); su.tangent = tangent_triangle(s, t, p, n); }\n"
       "  vec3 b = su.tangent.w * cross(n, su.tangent.xyz);\n  float e = 1e-3;\n"
