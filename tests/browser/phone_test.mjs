@@ -35,6 +35,8 @@ const shot = (page, name) => page.screenshot({ path: join(outDir, `phone-${name}
 const sleep = (ms) => new Promise((ok) => setTimeout(ok, ms));
 const camNumbers = (cam) => decodeURIComponent(cam).split(",").map(Number);
 const addressCam = (page) => page.evaluate(() => new URLSearchParams(location.search).get("cam"));
+// The app's own view now (the address follows it only every 500 ms).
+const appCam = async (page) => camOf(await stats(page));
 
 const phones = [
   { name: "iphone", viewport: { width: 390, height: 844 }, size: "39x84" },
@@ -166,7 +168,7 @@ async function phoneChecks(context, url, phone, full) {
   }
 
   // The bar, tapped: the panel; its button: the bar again.
-  const camBefore = await addressCam(page);
+  const camBefore = await appCam(page);
   const bar = ui.bar, tapBar = () => touch.tap((bar[0] + bar[2] * 0.5) / dpr, (bar[1] + bar[3] * 0.5) / dpr);
   await tapBar();
   await until(page, () => !window.ptUi().panelCollapsed && window.ptUi().panel[3] > 0, null, 10000).catch(() => {});
@@ -176,7 +178,9 @@ async function phoneChecks(context, url, phone, full) {
   const rowCss = ui.rowPixels / dpr;
   check(`${phone.name}: a tap on the bar expands the panel, with rows a finger hits`, !ui.panelCollapsed && ui.panel[3] > 0 &&
         rowCss >= 40 && rowCss <= 52 && ui.fontPixels === 45, JSON.stringify(ui));
-  check(`${phone.name}: a tap on the panel is the panel's, not the camera's`, (await addressCam(page)) === camBefore && (await stats(page)).selected >= 0);
+  const camAfterTap = await appCam(page), selectedAfterTap = (await stats(page)).selected;
+  check(`${phone.name}: a tap on the panel is the panel's, not the camera's`, camAfterTap === camBefore && selectedAfterTap >= 0,
+        `cam ${camBefore} -> ${camAfterTap}, selected ${selectedAfterTap}`);
   at("expanded");
   if (full) {
     await touch.tap((ui.hide[0] + ui.hide[2] * 0.5) / dpr, (ui.hide[1] + ui.hide[3] * 0.5) / dpr);  // the first row's button
@@ -197,8 +201,9 @@ async function phoneChecks(context, url, phone, full) {
     await touch.gesture([[x, y]], [[x, y - 200]]);
     await until(page, () => window.ptUi().panelScroll > 0, null, 10000).catch(() => {});
     const scrolled = await page.evaluate(() => window.ptUi());
-    check(`${phone.name}: a drag on the panel's background scrolls it`, scrolled.panelScroll > 100 && (await addressCam(page)) === camBefore,
-          `scroll ${scrolled.panelScroll}, cam ${await addressCam(page)} (was ${camBefore})`);
+    const camAfterScroll = await appCam(page);
+    check(`${phone.name}: a drag on the panel's background scrolls it`, scrolled.panelScroll > 100 && camAfterScroll === camBefore,
+          `scroll ${scrolled.panelScroll}, cam ${camAfterScroll} (was ${camBefore})`);
     // Turned sideways: the canvas follows, the view stays.
     await page.setViewportSize({ width: H, height: W });
     await until(page, (w) => document.getElementById("canvas").width === w, H * 3, 10000).catch(() => {});
