@@ -48,7 +48,9 @@ struct SceneLoad::State {
   bool gltf = false;  // a scene of a glTF file alone (scene/gltf_scene.h)
 };
 
-SceneLoad::SceneLoad(const std::string& text, const std::string& path, bool allow_files) : s_(std::make_unique<State>()) {
+SceneLoad::SceneLoad(const std::string& text, const std::string& path, bool allow_files,
+                     long long generated_triangle_budget)
+    : s_(std::make_unique<State>()) {
   // tinyxml2 stops at a NUL byte and accepts what came before: a NUL is an error here.
   const size_t nul = text.find('\0');
   if (nul != std::string::npos)
@@ -65,6 +67,7 @@ SceneLoad::SceneLoad(const std::string& text, const std::string& path, bool allo
   reject_text(&doc, path);
   Loader& l = s_->loader;
   l.allow_files = allow_files;
+  l.generated_triangle_budget = generated_triangle_budget;
   l.file = path;
   l.scene.path = path;
   l.scene.files = {path};
@@ -72,6 +75,7 @@ SceneLoad::SceneLoad(const std::string& text, const std::string& path, bool allo
   // (or is somewhere a mesh is not allowed) is left to the scene's own pass, which says why.
   Loader ahead;
   ahead.allow_files = allow_files;
+  ahead.generated_triangle_budget = generated_triangle_budget;
   ahead.file = path;
   std::vector<const XMLElement*> todo{doc.RootElement()};
   while (!todo.empty()) {
@@ -167,8 +171,9 @@ const std::string& SceneLoad::stage() const { return s_->stage; }
 
 Scene SceneLoad::take() { return std::move(s_->scene); }
 
-Scene load_scene_text(const std::string& text, const std::string& path, bool allow_files) {
-  SceneLoad l(text, path, allow_files);
+Scene load_scene_text(const std::string& text, const std::string& path, bool allow_files,
+                      long long generated_triangle_budget) {
+  SceneLoad l(text, path, allow_files, generated_triangle_budget);
   l.finish();
   return l.take();
 }

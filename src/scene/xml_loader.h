@@ -13,8 +13,12 @@ constexpr size_t kMaxSceneBytes = size_t(16) << 20;
 // A .gltf or .glb file is a scene of its own (scene/gltf_scene.h); any other file is XML.
 Scene load_scene_file(const std::string& path);
 // allow_files = false refuses every file reference (<Mesh src>, <Environment map>): for
-// text from an untrusted source, and for the fuzzer.
-Scene load_scene_text(const std::string& text, const std::string& path, bool allow_files = true);
+// text from an untrusted source, and for the fuzzer. generated_triangle_budget >= 0 caps
+// the triangles the scene's <Mesh generate> elements make together (an InputError past
+// it): the fuzzer's limit, so that a legal level-9 icosphere (5.2 million triangles, seconds
+// under ASan) is not reported as a hang (docs/reliability.md); negative: no cap.
+Scene load_scene_text(const std::string& text, const std::string& path, bool allow_files = true,
+                      long long generated_triangle_budget = -1);
 // The scene file's text (throws InputError: missing, or over kMaxSceneBytes).
 std::string read_scene_file(const std::string& path);
 
@@ -25,7 +29,8 @@ std::string read_scene_file(const std::string& path);
 // load_scene_text would (the same code: load_scene_text runs it in one go).
 class SceneLoad {
  public:
-  SceneLoad(const std::string& text, const std::string& path, bool allow_files = true);
+  SceneLoad(const std::string& text, const std::string& path, bool allow_files = true,
+            long long generated_triangle_budget = -1);
   // The scene file `path` by its name: a .gltf or .glb is the scene of that file alone
   // (scene/gltf_scene.h: its errors name the glTF file, not the generated scene), any
   // other file is read (read_scene_file) as XML. The one place a scene file is opened.

@@ -308,3 +308,21 @@ TEST_CASE("unusual but meaningful values load: extreme IORs, any pitch, exponent
                         "x.xml")
             .environment.intensity == 1e7f);
 }
+
+TEST_CASE("a generated-triangle budget (the fuzzer's) caps <Mesh generate>, counting a source once", "[loader]") {
+  const std::string h = kHead;
+  auto mesh = [](int level, const char* displace) {
+    return "<Mesh generate=\"icosphere\" level=\"" + std::to_string(level) + "\" displace=\"" + displace + "\"><Diffuse/></Mesh>\n";
+  };
+  // 3 x level 6 = 3 x 81,920 = 245,760 <= 2^18; the same source twice is made once.
+  const std::string three = h + "<Objects>\n" + mesh(6, "0") + mesh(6, "0.1") + mesh(6, "0.2") + mesh(6, "0.2") + "</Objects></SceneLevel>";
+  CHECK(pt::load_scene_text(three, "ok.xml", false, 1ll << 18).meshes.size() == 3);
+  const std::string four = h + "<Objects>\n" + mesh(6, "0") + mesh(6, "0.1") + mesh(6, "0.2") + mesh(6, "0.3") + "</Objects></SceneLevel>";
+  try {
+    pt::load_scene_text(four, "bad.xml", false, 1ll << 18);
+    FAIL("over the budget, yet loaded");
+  } catch (const pt::InputError& e) {
+    CHECK(std::string(e.what()) == "bad.xml:8: <Mesh>: the generated meshes make 327680 triangles, over this load's budget of 262144");
+  }
+  CHECK(pt::load_scene_text(four, "nobudget.xml", false).meshes.size() == 4);  // no budget: a legal scene
+}

@@ -149,6 +149,14 @@ MeshSource Loader::mesh_source(XmlAttrs& a, const XMLElement* e) {
   m.level = int(lf);
   if (!(m.displace >= 0.0f && m.displace < 0.5f)) a.fail("'displace' must be in [0, 0.5)");
   m.key = "generate:icosphere:" + std::to_string(m.level) + ":" + std::to_string(m.displace);
+  if (generated_triangle_budget >= 0) {
+    generated[m.key] = 20ll << (2 * m.level);  // 20 * 4^level; a source used twice is made once
+    long long total = 0;
+    for (const auto& g : generated) total += g.second;
+    if (total > generated_triangle_budget)
+      a.fail("the generated meshes make " + std::to_string(total) + " triangles, over this load's budget of " +
+             std::to_string(generated_triangle_budget));
+  }
   return m;
 }
 

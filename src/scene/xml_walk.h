@@ -50,6 +50,8 @@ struct Loader final : MaterialLoader {
   std::map<const MeshData*, std::pair<glm::vec3, glm::vec3>> mesh_boxes;  // each mesh's box, for its instances
 
   bool allow_files = true;  // false: any file reference is an error (fuzzing, untrusted text)
+  long long generated_triangle_budget = -1;  // >= 0: a cap on generated triangles (the fuzzer's)
+  std::map<std::string, long long> generated;  // generated sources so far, by key: their triangles
   int composite_depth_ = 0;  // composites being parsed around the current element (child())
 
   // A path in a scene file is relative to the scene file's folder. Every referenced file
