@@ -27,7 +27,7 @@ class ProgramCache {
   size_t size() const { return cache_.size(); }
 
  private:
-  std::unordered_map<uint64_t, std::unique_ptr<Entry>> cache_;
+  std::unordered_map<std::string, std::unique_ptr<Entry>> cache_;  // by Features::key()
 };
 
 }  // namespace pt

@@ -19,9 +19,9 @@ struct Features {
   uint32_t lights = 0;     // bit i: an emitter of ShapeKind i is light-sampled
   uint32_t punctual = 0;   // bit i: a punctual light of LightKind i (lights/kinds.h)
   uint32_t material_features = 0;  // bit i: MaterialFeature i is used (materials/features.h)
+  RenderMode mode = RenderMode::PathTracer;  // a render setting, not the scene's: the renderer sets it
   bool env_map = false;    // an HDR environment map (importance-sampled)
   bool motion = false;     // a shape moves (velocity): intersection depends on time
-  RenderMode mode = RenderMode::PathTracer;  // a render setting, not the scene's: the renderer sets it
   // A GLSL ES 3.10 compute kernel instead of the WebGL 2 fragment pass (native GL ES 3.1+
   // only; the same code, run on every core: some GPUs, the H100 among them, give
   // fragment shaders a small part of their cores). A renderer setting too.
@@ -40,15 +40,22 @@ struct Features {
       if (has(MaterialKind(i)) && kMaterialTraits[i].image_maps) return true;
     return false;
   }
-  uint64_t key() const {
-    return uint64_t(shapes) | uint64_t(compute) << 15 | uint64_t(lights | punctual << 10) << 16 | uint64_t(aux) << 31 |
-           uint64_t(materials) << 32 | uint64_t(motion) << 62 | uint64_t(env_map) << 63 | uint64_t(mode) << 60 |  // materials use bits 32..51
-           uint64_t(material_features) << 52;
+  // The program cache's key: every field, each in its own bytes (no packing to outgrow).
+  std::string key() const {
+    std::string k;
+    auto put = [&k](uint32_t v) { k.append(reinterpret_cast<const char*>(&v), sizeof v); };
+    put(shapes), put(materials), put(lights), put(punctual), put(material_features);
+    put(uint32_t(env_map) | uint32_t(motion) << 1 | uint32_t(compute) << 2 | uint32_t(aux) << 3 | uint32_t(mode) << 8);
+    return k;
   }
   static Features of(const Scene& scene);
 };
-static_assert(kNumShapeKinds <= 10 && kNumLightKinds <= 5 &&  // lights: bits 16..30, aux 31
-              kNumMaterialKinds <= 20 && kNumMaterialFeatures <= 8 && kNumRenderModes <= 4, "Features::key bits");
+// A field added to Features must go into key() too (else two programs share a cache slot).
+// (The fields are ordered so that Features has no padding: any new one changes its size.)
+static_assert(sizeof(Features) == 5 * sizeof(uint32_t) + sizeof(RenderMode) + 4 * sizeof(bool),
+              "a new field of Features: add it to key() and to this count");
+static_assert(kNumShapeKinds <= 32 && kNumLightKinds <= 32 && kNumMaterialKinds <= 32 && kNumMaterialFeatures <= 32,
+              "Features: one bit per kind in 32");
 
 class ShaderGenError : public std::runtime_error {
  public:
