@@ -6,6 +6,7 @@
 //        [--size 512x512] [--bounces 8] [--out build/peers] [--extra-NAME QUERY] [--our-build DIR]
 //   node tools/peers/bench.mjs reference --tracer NAME --seconds S     (a long run of that tracer)
 //   node tools/peers/bench.mjs reference --tracer ours --native --seconds S   (build/native/pathtracer)
+//   node tools/peers/bench.mjs report --results build/peers/results-STAMP.json  (the table again)
 //
 // `run` opens each tracer's page in a fresh headless Chromium (Debian's /usr/bin/chromium,
 // SwiftShader; a fresh profile each time, so no shader cache), interleaved A B A B over the
@@ -31,7 +32,7 @@ const adapterNames = ["ours", "three-gpu-pt"];  // adapters/NAME.mjs; add a trac
 const argv = process.argv.slice(2);
 const command = argv[0] && !argv[0].startsWith("--") ? argv.shift() : "run";
 const opt = { tracers: adapterNames.join(","), cycles: "3", windows: "30,120", size: "512x512", bounces: "8",
-              out: "build/peers", tracer: "", seconds: "", native: false, "our-build": "", extra: {}, chromium: "/usr/bin/chromium" };
+              out: "build/peers", tracer: "", seconds: "", native: false, "our-build": "", results: "", extra: {}, chromium: "/usr/bin/chromium" };
 for (let i = 0; i < argv.length; i++) {
   const key = argv[i].replace(/^--/, "");
   if (key === "native") { opt.native = true; continue; }
@@ -88,7 +89,7 @@ const chromeArgs = ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-
 async function runOnce(adapter, server, checkpointsMs, log) {
   const ctx = ctxFor(adapter.name);
   const browser = await chromium.launch({ executablePath: opt.chromium, headless: true, args: chromeArgs });
-  const res = { tracer: adapter.name, browser: browser.version(), startedAt: new Date().toISOString() };
+  const res = { tracer: adapter.name, url: adapter.url(ctx), browser: browser.version(), startedAt: new Date().toISOString() };
   try {
     const context = await browser.newContext({ viewport: { width: Math.max(width, 640), height: Math.max(height, 640) }, deviceScaleFactor: 1 });
     await adapter.prepare(context, ctx);
@@ -96,7 +97,8 @@ async function runOnce(adapter, server, checkpointsMs, log) {
     const pageLog = [];
     page.on("console", (m) => pageLog.push(`${m.type()}: ${m.text()}`));
     page.on("pageerror", (e) => pageLog.push(`pageerror: ${e.message}`));
-    await page.goto(server.url + adapter.url(ctx), { waitUntil: "load" });
+    page.setDefaultTimeout(900e3);  // a loaded machine: a page of many modules loads slowly
+    await page.goto(server.url + adapter.url(ctx), { waitUntil: "load", timeout: 900e3 });
     const started = Date.now();
     const waitFor = async (states, limitMs) => {
       while (true) {
@@ -109,7 +111,7 @@ async function runOnce(adapter, server, checkpointsMs, log) {
     };
     await waitFor(["rendering"], 900e3);
     res.info = await page.evaluate(() => window.peerBench.info());
-    log(`  ${adapter.name}: first image at ${(res.info.firstImageMs / 1e3).toFixed(1)} s, compile ${res.info.compileMs !== undefined ? (res.info.compileMs / 1e3).toFixed(1) + " s" : "?"}`);
+    { const c = compileMs(res); log(`  ${adapter.name}: first image at ${(res.info.firstImageMs / 1e3).toFixed(1)} s, compile ${(c.ms / 1e3).toFixed(1)} s${c.estimated ? " (est.)" : ""}`); }
     await page.evaluate((cps) => window.peerBench.start(cps), checkpointsMs);
     await waitFor(["done"], 900e3 + checkpointsMs[checkpointsMs.length - 1] * 3);
     res.records = await page.evaluate(() => window.peerBench.records());
@@ -151,12 +153,19 @@ async function commandRun() {
   const server = await startServer(adapters.flatMap((a) => a.mounts(ctxFor(a.name))));
   const log = (s) => console.log(s);
   log(`peers: ${adapters.map((a) => a.name).join(" ")}, ${opt.cycles} cycles, windows ${windows.join(", ")} s, ${width}x${height}, ${bounces} bounces; ${server.url}`);
-  const runs = [];
+  const runs = [], failed = [];
   try {
     for (let c = 0; c < Number(opt.cycles); c++) {
       log(`cycle ${c + 1}`);
       for (const a of adapters) {
-        const r = await runOnce(a, server, cps, log);
+        let r;
+        try {
+          r = await runOnce(a, server, cps, log);
+        } catch (e) {  // one failed run is reported, the others go on
+          log(`  ${a.name}: FAILED: ${e.message ?? e}`);
+          failed.push({ tracer: a.name, cycle: c + 1, error: String(e.message ?? e) });
+          continue;
+        }
         r.cycle = c + 1;
         runs.push(r);
         const last = r.records[r.records.length - 1];
@@ -166,27 +175,60 @@ async function commandRun() {
   } finally {
     server.close();
   }
-  // Summaries per tracer.
+  const stamp = new Date().toISOString().replace(/[:.]/g, "-");
+  const result = { stamp, date: new Date().toISOString(), browser: runs[0]?.browser, renderer: runs[0]?.info?.renderer, size: opt.size, bounces,
+                   cycles: Number(opt.cycles), windows, tracers: adapters.map((a) => ({ name: a.name, title: a.title })), machine: machine(),
+                   runs: runs.map(({ images, ...r }) => r), failed };
+  // Every window's image, so that `report` can score the runs against references made later.
+  runs.forEach((r, i) => r.images.forEach((img, k) => {
+    result.runs[i].imageFiles = result.runs[i].imageFiles ?? [];
+    const file = `run-${stamp}-${r.tracer}-c${r.cycle}-w${windows[k]}.pfm`;
+    writePfm(join(outDir, file), width, height, img);
+    result.runs[i].imageFiles.push(file);
+  }));
+  writeFileSync(join(outDir, `results-${stamp}.json`), JSON.stringify(result, null, 2));
+  report(result, runs.map((r) => r.images));
+}
+
+// The table from a run's results: scored against the references in the output folder now.
+function report(result, images) {
+  const { windows, stamp } = result;
   const refs = {}, table = [];
-  for (const a of adapters) if (existsSync(refPath(a.name))) refs[a.name] = readPfm(refPath(a.name));
+  for (const a of result.tracers) if (existsSync(refPath(a.name))) refs[a.name] = readPfm(refPath(a.name));
+  const runs = result.runs.map((r, i) => ({ ...r, images: images[i] }));
   const oursMean = (() => {
     if (refs.ours) return { mean: meanRgb(refs.ours.rgb), of: "reference" };
     const own = runs.filter((r) => r.tracer === "ours");
-    return own.length ? { mean: meanRgb(own[own.length - 1].images.at(-1)), of: "last image" } : null;
+    return own.length ? { mean: meanRgb(own.at(-1).images.at(-1)), of: "last image" } : null;
   })();
-  for (const a of adapters) {
+  for (const a of result.tracers) {
     const own = runs.filter((r) => r.tracer === a.name);
+    if (!own.length) { table.push({ tracer: a.name, title: a.title, none: true }); continue; }
     const pps = own.map((r) => { const l = r.records.at(-1); return l.paths / (l.tMs / 1e3); });
     const first = own.map((r) => r.info.firstImageMs / 1e3);
     const comp = own.map(compileMs);
+    // The first image less one sample's time at the run's own rate (from the windows, else
+    // the page's sample times): what loading, compiling and the driver's first-draw JIT
+    // cost, counted the same way for every tracer (SwiftShader compiles a program to
+    // machine code at its first draw, after the link that a page can time).
+    const overhead = own.map((r, k) => {
+      const sampleS = pps[k] > 0 ? (width * height) / pps[k] : median(r.info.sampleMsFirst ?? []) / 1e3;
+      return r.info.firstImageMs / 1e3 - sampleS;
+    });
     const row = { tracer: a.name, title: a.title, pathsPerSec: { median: median(pps), min: Math.min(...pps), max: Math.max(...pps), each: pps },
                   firstImageS: { median: median(first), min: Math.min(...first), max: Math.max(...first) },
                   compileS: { median: median(comp.map((x) => x.ms / 1e3)), estimated: comp.some((x) => x.estimated) },
+                  overheadS: { median: median(overhead), min: Math.min(...overhead), max: Math.max(...overhead) },
+                  runSpp: Math.max(...own.map((r) => r.records.at(-1).paths / (width * height))),
                   relMse: {}, reference: null, meanRgb: null, meanVsOurs: null, late: own.some((r) => r.records.some((x) => x.late)) };
     const ref = refs[a.name];
     if (ref) {
       if (ref.w !== width || ref.h !== height) throw new Error(`${refPath(a.name)} is ${ref.w}x${ref.h}`);
       row.reference = JSON.parse(readFileSync(refPath(a.name) + ".json", "utf8"));
+      // A reference of the page made with other parameters (e.g. another ei) scores nothing.
+      const urls = new Set(own.map((r) => r.url));
+      if (row.reference.url && (urls.size !== 1 || !urls.has(row.reference.url)))
+        throw new Error(`${refPath(a.name)} was made at ${row.reference.url}, the runs at ${[...urls].join(", ")}: make it again`);
       windows.forEach((s, k) => {
         const v = own.map((r) => relMse(r.images[k], ref.rgb));
         row.relMse[s] = { median: median(v), each: v };
@@ -197,26 +239,39 @@ async function commandRun() {
     if (oursMean) row.meanVsOurs = lum(m) / lum(oursMean.mean);
     table.push(row);
   }
-  const stamp = new Date().toISOString().replace(/[:.]/g, "-");
-  const result = { date: new Date().toISOString(), browser: runs[0]?.browser, renderer: runs[0]?.info?.renderer, size: opt.size, bounces, cycles: Number(opt.cycles), windows,
-                   machine: machine(), table, runs: runs.map(({ images, ...r }) => r) };
-  writeFileSync(join(outDir, `results-${stamp}.json`), JSON.stringify(result, null, 2));
-  for (const r of runs) writePfm(join(outDir, `run-${stamp}-${r.tracer}-c${r.cycle}.pfm`), width, height, r.images.at(-1));
   // The table, as docs/benchmarks.md keeps it.
   const md = [];
-  md.push(`${result.date}, ${result.browser}, ${result.renderer}, ${result.machine}; scene2, ${opt.size}, ${bounces} bounces, ${opt.cycles} cycles interleaved, windows ${windows.join(", ")} s of rendering after the first image`);
+  md.push(`${result.date}, ${result.browser}, ${result.renderer}, ${result.machine}; scene2, ${result.size}, ${result.bounces} bounces, ${result.cycles} cycles interleaved, windows ${windows.join(", ")} s of rendering after the first image`);
   md.push("");
-  md.push(`| tracer | paths/s, median (range) | first image, s | compile, s | ${windows.map((s) => `relMSE at ${s} s`).join(" | ")} | mean lum. vs ours |`);
-  md.push(`|---|---|---|---|${windows.map(() => "---|").join("")}---|`);
-  for (const r of table)
-    md.push(`| ${r.title} | ${fmt(r.pathsPerSec.median)} (${fmt(r.pathsPerSec.min)}-${fmt(r.pathsPerSec.max)}) | ${fmt(r.firstImageS.median, 1)} (${fmt(r.firstImageS.min, 1)}-${fmt(r.firstImageS.max, 1)}) | ${fmt(r.compileS.median, 1)}${r.compileS.estimated ? " (est.)" : ""} | ` +
+  md.push(`| tracer | paths/s, median (range) | first image, s | compile, s | first image less one sample, s | ${windows.map((s) => `relMSE at ${s} s`).join(" | ")} | mean lum. vs ours |`);
+  md.push(`|---|---|---|---|---|${windows.map(() => "---|").join("")}---|`);
+  for (const r of table.filter((x) => x.none)) md.push(`| ${r.title} | every run failed |${windows.map(() => " |").join("")} | | | |`);
+  for (const r of table.filter((x) => !x.none))
+    md.push(`| ${r.title} | ${fmt(r.pathsPerSec.median)} (${fmt(r.pathsPerSec.min)}-${fmt(r.pathsPerSec.max)}) | ${fmt(r.firstImageS.median, 1)} (${fmt(r.firstImageS.min, 1)}-${fmt(r.firstImageS.max, 1)}) | ${fmt(r.compileS.median, 1)}${r.compileS.estimated ? " (est.)" : ""} | ${fmt(r.overheadS.median, 1)} (${fmt(r.overheadS.min, 1)}-${fmt(r.overheadS.max, 1)}) | ` +
             windows.map((s) => (r.relMse[s] ? fmtE(r.relMse[s].median) : "no reference")).join(" | ") + ` | ${r.meanVsOurs !== null ? fmt(r.meanVsOurs, 3) : "n/a"} (${r.meanRgb.of}) |`);
   md.push("");
-  for (const r of table) if (r.reference) md.push(`reference of ${r.tracer}: ${r.reference.how}`);
+  md.push("compile: as the page times it (ours: until the link status is known, KHR_parallel_shader_compile); (est.): the first sample's time less a later sample's.");
+  for (const f of result.failed ?? []) md.push(`FAILED: ${f.tracer}, cycle ${f.cycle}: ${f.error.split("\n")[0]}`);
+  for (const r of table) {
+    if (!r.reference) continue;
+    md.push(`reference of ${r.tracer}: ${r.reference.how}`);
+    // relMSE against a reference of N spp reads high by about (run spp)/N: its own noise.
+    if (!(r.reference.spp >= 10 * r.runSpp))
+      md.push(`note: the reference of ${r.tracer} has ${fmt(r.reference.spp, 1)} spp, under 10x the runs' ${fmt(r.runSpp, 1)}: its own noise is in these relMSE figures (not converged)`);
+  }
   for (const r of table) if (r.late) md.push(`note: ${r.tracer} took some window images late (a sample far slower than the one before)`);
   writeFileSync(join(outDir, `results-${stamp}.md`), md.join("\n") + "\n");
+  writeFileSync(join(outDir, `table-${stamp}.json`), JSON.stringify(table, null, 2));
   console.log("\n" + md.join("\n"));
-  console.log(`\nwrote ${join(opt.out, `results-${stamp}.{json,md}`)} and the last image of each run (run-${stamp}-*.pfm)`);
+  console.log(`\nwrote ${join(opt.out, `results-${stamp}.{json,md}`)}, table-${stamp}.json and each window's image (run-${stamp}-*.pfm)`);
+}
+
+// `report --results build/peers/results-STAMP.json`: the table again, e.g. after references.
+function commandReport() {
+  if (!opt.results) throw new Error("report needs --results FILE");
+  const result = JSON.parse(readFileSync(resolve(repo, opt.results), "utf8"));
+  if (result.size !== opt.size || result.bounces !== bounces) throw new Error(`the results are ${result.size}, ${result.bounces} bounces: pass --size and --bounces`);
+  report(result, result.runs.map((r) => r.imageFiles.map((f) => readPfm(join(outDir, f)).rgb)));
 }
 
 function machine() {
@@ -231,7 +286,7 @@ async function commandReference() {
   const name = opt.tracer, seconds = Number(opt.seconds);
   if (!name || !(seconds > 0)) throw new Error("reference needs --tracer NAME --seconds S");
   const path = refPath(name);
-  let how, rgb;
+  let how, rgb, spp, pageUrl = null;
   if (opt.native) {
     if (name !== "ours") throw new Error("--native is for ours only");
     const exe = join(repo, "build/native/pathtracer");
@@ -241,7 +296,7 @@ async function commandReference() {
     const p = spawnSync(exe, args, { encoding: "utf8", stdio: ["ignore", "pipe", "inherit"] });
     process.stdout.write(p.stdout);
     if (p.status !== 0) throw new Error(`pathtracer exited with ${p.status}`);
-    const spp = /rendered (\d+) spp/.exec(p.stdout)?.[1] ?? "?";
+    spp = Number(/rendered (\d+) spp/.exec(p.stdout)?.[1] ?? NaN);
     const gl = p.stdout.split("\n").find((l) => /renderer/i.test(l)) ?? "";
     how = `native build/native/pathtracer render (the same shaders and estimator as the page), ${seconds} s, ${spp} spp, ${gl.trim()}`;
     rgb = readPfm(path).rgb;
@@ -252,13 +307,15 @@ async function commandReference() {
       const r = await runOnce(adapter, server, [seconds * 1e3], console.log);
       const last = r.records.at(-1);
       rgb = r.images.at(-1);
+      spp = last.paths / (width * height);
+      pageUrl = r.url;
       how = `a ${seconds}-s run of the same page in ${r.browser} (${r.info.renderer}), ${fmt(last.paths / (width * height), 2)} spp`;
     } finally {
       server.close();
     }
     writePfm(path, width, height, rgb);
   }
-  const meta = { tracer: name, how, seconds, date: new Date().toISOString(), mean: meanRgb(rgb) };
+  const meta = { tracer: name, how, seconds, spp, url: pageUrl, date: new Date().toISOString(), mean: meanRgb(rgb) };
   writeFileSync(path + ".json", JSON.stringify(meta, null, 2));
   console.log(`wrote ${path}: ${how}; mean ${meta.mean.map((v) => v.toFixed(4)).join(" ")}`);
 }
@@ -266,7 +323,8 @@ async function commandReference() {
 try {
   if (command === "run") await commandRun();
   else if (command === "reference") await commandReference();
-  else throw new Error(`unknown command '${command}' (run | reference)`);
+  else if (command === "report") commandReport();
+  else throw new Error(`unknown command '${command}' (run | reference | report)`);
 } catch (e) {
   console.error(`peers: ${e.stack ?? e}`);
   process.exit(1);

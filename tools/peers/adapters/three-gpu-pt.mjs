@@ -13,7 +13,9 @@ export function mounts(ctx) {
 
 // The page's address for the size and bounces (ctx.extra: more query text, e.g. "ei=8").
 export function url(ctx) {
-  const q = new URLSearchParams(`size=${ctx.width}x${ctx.height}&bounces=${ctx.bounces}`);
+  // ei=69: scene2's emitter (<Emit><Absorb intensity="69">), so that the two images agree
+  // in scale (the page's own default, 8, is the notes' first run: 8/69 of ours, measured).
+  const q = new URLSearchParams(`size=${ctx.width}x${ctx.height}&bounces=${ctx.bounces}&ei=69`);
   for (const [k, v] of new URLSearchParams(ctx.extra ?? "")) q.set(k, v);
   return `/peers/three-gpu-pt/index.html?${q}`;
 }
