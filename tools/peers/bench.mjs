@@ -259,7 +259,7 @@ function report(result, images) {
     if (!(r.reference.spp >= 10 * r.runSpp))
       md.push(`note: the reference of ${r.tracer} has ${fmt(r.reference.spp, 1)} spp, under 10x the runs' ${fmt(r.runSpp, 1)}: its own noise is in these relMSE figures (not converged)`);
   }
-  for (const r of table) if (r.late) md.push(`note: ${r.tracer} took some window images late (a sample far slower than the one before)`);
+  for (const r of table) if (r.late) md.push(`note: ${r.tracer} took some window images more than 0.5 s after their time (a long frame, or a sample far slower than the one before)`);
   writeFileSync(join(outDir, `results-${stamp}.md`), md.join("\n") + "\n");
   writeFileSync(join(outDir, `table-${stamp}.json`), JSON.stringify(table, null, 2));
   console.log("\n" + md.join("\n"));
@@ -297,7 +297,7 @@ async function commandReference() {
     process.stdout.write(p.stdout);
     if (p.status !== 0) throw new Error(`pathtracer exited with ${p.status}`);
     spp = Number(/rendered (\d+) spp/.exec(p.stdout)?.[1] ?? NaN);
-    const gl = p.stdout.split("\n").find((l) => /renderer/i.test(l)) ?? "";
+    const gl = p.stdout.split("\n").find((l) => l.startsWith("GL:")) ?? "";
     how = `native build/native/pathtracer render (the same shaders and estimator as the page), ${seconds} s, ${spp} spp, ${gl.trim()}`;
     rgb = readPfm(path).rgb;
   } else {
