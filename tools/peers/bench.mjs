@@ -21,7 +21,6 @@ import { spawnSync } from "node:child_process";
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
-import { chromium } from "playwright-core";
 import { startServer } from "./server.mjs";
 
 const peersDir = dirname(fileURLToPath(import.meta.url));
@@ -88,6 +87,7 @@ const chromeArgs = ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-
                     "--disable-renderer-backgrounding", "--disable-backgrounding-occluded-windows"];
 async function runOnce(adapter, server, checkpointsMs, log) {
   const ctx = ctxFor(adapter.name);
+  const { chromium } = await import("playwright-core");  // not needed by `reference --native` and `report`
   const browser = await chromium.launch({ executablePath: opt.chromium, headless: true, args: chromeArgs });
   const res = { tracer: adapter.name, url: adapter.url(ctx), browser: browser.version(), startedAt: new Date().toISOString() };
   try {
