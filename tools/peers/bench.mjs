@@ -6,6 +6,7 @@
 //        [--size 512x512] [--bounces 8] [--out build/peers] [--extra-NAME QUERY] [--our-build DIR]
 //   node tools/peers/bench.mjs reference --tracer NAME --seconds S     (a long run of that tracer)
 //   node tools/peers/bench.mjs reference --tracer ours --native --seconds S   (build/native/pathtracer)
+//   node tools/peers/bench.mjs reference --tracer NAME --import FILE.pfm --spp N --how TEXT  (rendered elsewhere)
 //   node tools/peers/bench.mjs report --results build/peers/results-STAMP.json  (the table again)
 //
 // `run` opens each tracer's page in a fresh headless Chromium (Debian's /usr/bin/chromium,
@@ -31,7 +32,7 @@ const adapterNames = ["ours", "three-gpu-pt"];  // adapters/NAME.mjs; add a trac
 const argv = process.argv.slice(2);
 const command = argv[0] && !argv[0].startsWith("--") ? argv.shift() : "run";
 const opt = { tracers: adapterNames.join(","), cycles: "3", windows: "30,120", size: "512x512", bounces: "8",
-              out: "build/peers", tracer: "", seconds: "", native: false, "our-build": "", results: "", extra: {}, chromium: "/usr/bin/chromium" };
+              out: "build/peers", tracer: "", seconds: "", native: false, "our-build": "", results: "", import: "", how: "", spp: "", extra: {}, chromium: "/usr/bin/chromium" };
 for (let i = 0; i < argv.length; i++) {
   const key = argv[i].replace(/^--/, "");
   if (key === "native") { opt.native = true; continue; }
@@ -284,10 +285,17 @@ function machine() {
 // the native renderer (the same shaders and estimator; faster, e.g. on a GPU).
 async function commandReference() {
   const name = opt.tracer, seconds = Number(opt.seconds);
-  if (!name || !(seconds > 0)) throw new Error("reference needs --tracer NAME --seconds S");
+  if (!name || !(seconds > 0 || opt.import)) throw new Error("reference needs --tracer NAME --seconds S (or --import FILE.pfm --spp N --how TEXT)");
   const path = refPath(name);
   let how, rgb, spp, pageUrl = null;
-  if (opt.native) {
+  if (opt.import) {  // a reference rendered elsewhere (e.g. the native renderer on a GPU machine)
+    const img = readPfm(resolve(opt.import));
+    if (img.w !== width || img.h !== height) throw new Error(`${opt.import} is ${img.w}x${img.h}, not ${width}x${height}`);
+    rgb = img.rgb;
+    spp = Number(opt.spp);
+    how = opt.how || `imported from ${opt.import}`;
+    writePfm(path, width, height, rgb);
+  } else if (opt.native) {
     if (name !== "ours") throw new Error("--native is for ours only");
     const exe = join(repo, "build/native/pathtracer");
     const args = ["render", join(repo, "scenes/reference/scene2.xml"), "--size", `${width}x${height}`, "--bounces", String(bounces),
