@@ -189,12 +189,16 @@ TEST_CASE("tiles, resized between any two draws, give exactly the whole-image es
   r.set_scene(scene);
   const int sizes[][2] = {{7, 9}, {3, 0}, {5, 13}, {0, 30}, {2, 64}, {11, 1}, {4, 17}};
   int draws = 0, pixels = 0, sweeps = 0;
+  double drawn = 0;  // paths of every draw: Renderer::paths() counts mid-sweep progress (tools/peers/)
+  bool paths_ok = true;
   while (!r.converged()) {
     s.band_rows = sizes[draws % 7][0];
     s.band_columns = sizes[draws % 7][1];
     r.set_settings(s);
     const bool sweep_end = r.step() > 0;
     pixels += int(r.last_draw_samples() / s.spp_per_pass);
+    drawn += double(r.last_draw_samples());
+    paths_ok = paths_ok && r.paths() == drawn;
     ++draws;
     if (sweep_end) {
       CHECK(pixels == kSize * kSize);  // each pixel once: the estimate would differ otherwise, but say why
@@ -204,6 +208,8 @@ TEST_CASE("tiles, resized between any two draws, give exactly the whole-image es
   }
   CHECK(sweeps == 2);
   CHECK(draws > 2 * kSize / 11);
+  CHECK(paths_ok);
+  CHECK(r.paths() == 32.0 * kSize * kSize);
   const std::vector<float> b = r.read_radiance();
   double worst = 0;
   for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, double(std::abs(a[i] - b[i])));

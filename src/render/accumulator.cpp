@@ -122,6 +122,7 @@ int Accumulator::end_tile(const Tile& t) {
     glReadBuffer(GL_COLOR_ATTACHMENT0);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  paths_ += double(t.x1 - t.x0) * double(t.y1 - t.y0) * double(t.spp);
   if (t.x1 < width_) {
     next_column_ = t.x1;
     return 0;

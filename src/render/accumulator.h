@@ -39,11 +39,16 @@ class Accumulator {
   int height() const { return height_; }
   void restart() {
     samples_ = 0;
+    paths_ = 0;
     ++epoch_;
     next_row_ = next_column_ = 0;
     needs_clear_ = true;
   }
   int samples() const { return samples_; }
+  // Paths traced since the restart (pixels x samples per pixel of every finished tile): the
+  // progress of a sweep in progress too, for a throughput figure finer than whole sweeps
+  // (the peer benchmark, tools/peers/).
+  double paths() const { return paths_; }
   int epoch() const { return epoch_; }  // counts restarts: an estimate from another image is stale
   bool mid_sweep() const { return next_row_ != 0 || next_column_ != 0; }
 
@@ -94,6 +99,7 @@ class Accumulator {
   GLenum format_ = GL_RGBA32F;
   int cur_ = 0;
   int samples_ = 0;
+  double paths_ = 0;
   int next_row_ = 0;      // first row of the band in progress or the next one; with
   int next_column_ = 0;   // this 0 too, a new sweep starts; else the band's next tile
   int band_end_ = 0;      // the row after the band in progress (fixed while it lasts)

@@ -113,6 +113,7 @@ class Renderer {
   GLuint vertex_array() const { return vao_; }  // the fullscreen triangle's (no attributes)
 
   int samples() const { return accum_.samples(); }
+  double paths() const { return accum_.paths(); }  // since the restart, sweeps in progress included
   bool converged() const { return settings_.sample_limit > 0 && samples() >= settings_.sample_limit; }
   int width() const { return accum_.width(); }
   int height() const { return accum_.height(); }
