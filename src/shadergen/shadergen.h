@@ -29,6 +29,9 @@ struct Features {
   // The camera pass also writes the denoiser's first-hit auxiliaries (camera_aux.glsl);
   // a renderer setting too.
   bool aux = false;
+  // Adaptive sampling: each tile's count and samples per pass from a texture
+  // (camera_pass.glsl, render/adaptive.h); a renderer setting too.
+  bool adaptive = false;
   bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
   bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
   bool has_light(ShapeKind k) const { return lights >> int(k) & 1u; }
@@ -41,13 +44,13 @@ struct Features {
     return false;
   }
   uint64_t key() const {
-    return uint64_t(shapes) | uint64_t(compute) << 15 | uint64_t(lights | punctual << 10) << 16 | uint64_t(aux) << 31 |
+    return uint64_t(shapes) | uint64_t(adaptive) << 14 | uint64_t(compute) << 15 | uint64_t(lights | punctual << 10) << 16 | uint64_t(aux) << 31 |
            uint64_t(materials) << 32 | uint64_t(motion) << 62 | uint64_t(env_map) << 63 | uint64_t(mode) << 60 |  // materials use bits 32..51
            uint64_t(material_features) << 52;
   }
   static Features of(const Scene& scene);
 };
-static_assert(kNumShapeKinds <= 10 && kNumLightKinds <= 5 &&  // lights: bits 16..30, aux 31
+static_assert(kNumShapeKinds <= 10 &&  // shapes: bits 0..9, adaptive 14, compute 15 kNumLightKinds <= 5 &&  // lights: bits 16..30, aux 31
               kNumMaterialKinds <= 20 && kNumMaterialFeatures <= 8 && kNumRenderModes <= 4, "Features::key bits");
 
 class ShaderGenError : public std::runtime_error {
