@@ -4,8 +4,9 @@
 For each scene: a converged reference (rendered once with many samples, kept in --work),
 then uniform (--adaptive off) and adaptive (--adaptive on) renders compared with it
   - at equal wall time: `pathtracer bench --seconds S`, --repeat times alternating off/on.
-    bench's rows are at powers of two of the spp, and its last row is the last one reached
-    within S (the two modes may stop at the same count at different times), so the
+    bench's rows are at powers of two of the spp and where the time ran out at a sweep's
+    end; its last row is the last one written within S (the two modes may stop at the
+    same count at different times, or at different counts), so the
     comparison is of relMSE x seconds at that row (the inverse of the efficiency: at equal
     time the relMSE of an unbiased estimate falls as 1/t), the median of the repeats;
   - at equal total samples: `pathtracer render --spp N` (adaptive spends the same
