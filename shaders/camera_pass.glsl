@@ -13,6 +13,12 @@ uniform highp sampler2D u_aux1_in;
 uniform float u_blend;       // weight of this pass: spp / (samples so far + spp)
 uniform int u_spp;           // samples per pixel in this pass
 uniform int u_sample_base;   // index of this pass's first sample
+#ifdef PT_ADAPTIVE
+// Adaptive sampling (render/adaptive.h): per tile of u_count_tile pixels, (samples so far,
+// samples this pass), in place of u_sample_base and u_spp; the blend is each tile's own.
+uniform highp sampler2D u_tile_counts;
+uniform int u_count_tile;
+#endif
 uniform int u_max_bounces;   // scattering events per path
 uniform int u_nee;           // 1: next-event estimation + MIS; 0: BSDF sampling only
 uniform vec3 u_cam_pos;
@@ -69,6 +75,23 @@ vec4 g_aux0, g_aux1;  // this pass's mean of the auxiliaries, blended into the r
 #endif
 
 void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {
+#ifdef PT_ADAPTIVE
+  ivec2 counts = ivec2(texelFetch(u_tile_counts, px / u_count_tile, 0).xy);
+  int base = counts.x, spp = counts.y;
+  float blend = float(spp) / float(base + spp);
+  if (spp == 0) {  // no samples for this tile in this pass: the pixel as it was
+    accum = texelFetch(u_accum, px, 0);
+    stats = texelFetch(u_stats_in, px, 0);
+#ifdef PT_AUX
+    g_aux0 = texelFetch(u_aux0_in, px, 0);
+    g_aux1 = texelFetch(u_aux1_in, px, 0);
+#endif
+    return;
+  }
+#else
+  int base = u_sample_base, spp = u_spp;
+  float blend = u_blend;
+#endif
   vec3 sum = vec3(0.0);
 #ifdef PT_AUX
   vec4 aux0 = vec4(0.0), aux1 = vec4(0.0);
@@ -76,8 +99,8 @@ void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {
   vec3 w_mean = vec3(0.0), w_m2 = vec3(0.0);  // Welford: this pass's mean and squared deviations
   float bad = 0.0;
   g_rays = 0;
-  for (int s = 0; s < u_spp; ++s) {
-    sampler_init(uvec2(px), uint(u_sample_base + s));
+  for (int s = 0; s < spp; ++s) {
+    sampler_init(uvec2(px), uint(base + s));
     vec4 u_cam = next4();  // xy: position in the pixel (box filter); zw: lens
     g_time = u_shutter * rand01();
     vec2 ndc = (vec2(px) + u_cam.xy) / u_size * 2.0 - 1.0;
@@ -109,23 +132,23 @@ void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {
     w_mean += dev / float(s + 1);
     w_m2 += dev * (c - w_mean);
   }
-  vec3 cur = sum / float(u_spp);
-  vec4 prev = u_blend >= 1.0 ? vec4(0.0) : texelFetch(u_accum, px, 0);
-  vec4 prev_stats = u_blend >= 1.0 ? vec4(0.0) : texelFetch(u_stats_in, px, 0);
+  vec3 cur = sum / float(spp);
+  vec4 prev = blend >= 1.0 ? vec4(0.0) : texelFetch(u_accum, px, 0);
+  vec4 prev_stats = blend >= 1.0 ? vec4(0.0) : texelFetch(u_stats_in, px, 0);
   // The variance about the mean of all samples so far, from the old one and this pass's
   // (Chan, Golub and LeVeque's pairwise update, on variances: b = this pass's share):
   // S = (1 - b) S_old + b S_pass + b (1 - b) (mean_pass - mean_old)^2.
-  vec3 s_pass = w_m2 / float(u_spp);
+  vec3 s_pass = w_m2 / float(spp);
   vec3 dm = cur - prev.rgb;
   vec3 s_old = vec3(prev_stats.zw, prev.a);
-  vec3 var = mix(s_old, s_pass, u_blend) + u_blend * (1.0 - u_blend) * dm * dm;
-  accum = vec4(u_blend >= 1.0 ? cur : mix(prev.rgb, cur, u_blend), var.b);
+  vec3 var = mix(s_old, s_pass, blend) + blend * (1.0 - blend) * dm * dm;
+  accum = vec4(blend >= 1.0 ? cur : mix(prev.rgb, cur, blend), var.b);
   stats = vec4(prev_stats.xy + vec2(bad, float(g_rays)), var.rg);
 #ifdef PT_AUX
-  aux0 /= float(u_spp);
-  aux1 /= float(u_spp);
-  g_aux0 = u_blend >= 1.0 ? aux0 : mix(texelFetch(u_aux0_in, px, 0), aux0, u_blend);
-  g_aux1 = u_blend >= 1.0 ? aux1 : mix(texelFetch(u_aux1_in, px, 0), aux1, u_blend);
+  aux0 /= float(spp);
+  aux1 /= float(spp);
+  g_aux0 = blend >= 1.0 ? aux0 : mix(texelFetch(u_aux0_in, px, 0), aux0, blend);
+  g_aux1 = blend >= 1.0 ? aux1 : mix(texelFetch(u_aux1_in, px, 0), aux1, blend);
 #endif
 }
 

@@ -159,6 +159,10 @@ void App::draw_panel() {
   char denoise_label[48];
   std::snprintf(denoise_label, sizeof denoise_label, denoise_ ? "denoise %.2f###denoise" : "denoise###denoise", double(denoise_blend()));
   ImGui::Checkbox(denoise_label, &denoise_);
+  // Adaptive sampling (render/adaptive.h; a change restarts), on the same row for the
+  // same reason; its default is RenderSettings' (docs/benchmarks.md says why).
+  ImGui::SameLine();
+  ImGui::Checkbox("adaptive", &settings_.adaptive);
   if (options_.save_file) {
     // PNG: the image as displayed (tone-mapped); HDR: linear radiance.
     const int w = renderer_->width(), h = renderer_->height();

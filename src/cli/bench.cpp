@@ -89,6 +89,8 @@ int run_bench(const Options& o) {
     }
   }
   const Row& last = rows.back();
+  if (const TileCounts* c = r.accumulator().tile_counts())
+    std::printf("adaptive sampling: %.2f spp on average (%.0f pixel-samples)\n", c->total() / (double(o.width) * o.height), c->total());
   std::printf("%s: %d spp in %.3f s at %dx%d: %.2f spp/s, %.1f Mrays/s; relMSE %.4g (estimated %.4g), RMSE %.4g\n",
               o.label.empty() ? o.scene.c_str() : o.label.c_str(), last.spp, last.seconds, o.width, o.height,
               last.spp / last.seconds, last.rays / last.seconds * 1e-6, last.e.rel_mse, last.est.rel_mse, last.e.rmse);

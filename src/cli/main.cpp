@@ -169,6 +169,23 @@ int run_render(const Options& o) {
     }
     std::printf("wrote %s\n", out.c_str());
   }
+  if (const TileCounts* c = r.accumulator().tile_counts()) {
+    const auto [lo, hi] = std::minmax_element(c->counts().begin(), c->counts().end());
+    std::printf("adaptive sampling: %.2f spp on average (%.0f pixel-samples), per %dx%d tile from %d to %d spp\n",
+                c->total() / (double(o.width) * o.height), c->total(), c->tile(), c->tile(), *lo, *hi);
+  }
+  if (!o.out_spp.empty()) {
+    std::vector<float> spp(size_t(o.width) * o.height * 4, float(r.samples()));
+    const TileCounts* c = r.accumulator().tile_counts();
+    for (int y = 0; y < o.height && c; ++y)
+      for (int x = 0; x < o.width; ++x)
+        for (int k = 0; k < 3; ++k) spp[(size_t(y) * o.width + x) * 4 + k] = float(c->at(x, y));
+    if (!write_pfm(o.out_spp, o.width, o.height, spp)) {
+      std::fprintf(stderr, "pathtracer: cannot write %s\n", o.out_spp.c_str());
+      return 1;
+    }
+    std::printf("wrote %s (samples per pixel)\n", o.out_spp.c_str());
+  }
   if (settings.aux && !denoise_outputs(o, r, est)) return 1;
   return st.bad == 0 && counters.bad_samples == 0 ? 0 : 3;
 }

@@ -32,6 +32,8 @@ const char* const kUsage =
     "  --env FILE.hdr    an equirectangular HDR map replacing the scene's environment\n"
     "  --kernel K        compute (default where the context is GL ES 3.1+, else fragment) or fragment\n"
     "                    (the WebGL 2 pass the page runs); same estimate, see docs/benchmarks.md\n"
+    "  --adaptive on|off per-tile sample counts from the variance (default off; docs/benchmarks.md,\n"
+    "                    \"adaptive sampling\"); each pixel stays the mean of its own samples\n"
     "render: --spp N (default 64), or until --seconds S if that comes first (references);\n"
     "        --target-relmse X stops once the estimated relMSE (printed at the end) is at most X\n"
     "        (then --spp, if given, and --seconds still cap it)\n"
@@ -42,6 +44,7 @@ const char* const kUsage =
     "        --out-denoised FILE (.png/.hdr/.pfm, may repeat; implies --denoise) writes the denoised one,\n"
     "        blended with the raw by --denoise-weight W (0..1; default auto: from the estimated relMSE);\n"
     "        --out-aux PREFIX writes PREFIX-albedo.pfm, PREFIX-normal.pfm, PREFIX-depth.pfm (implies --denoise);\n"
+    "        --out-spp FILE.pfm: each pixel's sample count (with --adaptive on, its tile's)\n"
     "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L (default 5,1,128,4: SVGF's) for tuning\n"
     "watch:  re-loads SCENE.xml when it or a file it references changes and re-renders to --out,\n"
     "        replaced atomically at 1, 2, 4, ... spp; a broken edit prints file:line and keeps the last image\n"
@@ -109,6 +112,12 @@ Options parse_options(int argc, char** argv, bool bench) {
       const std::string v = next();
       if (v != "compute" && v != "fragment") usage_error("--kernel takes compute or fragment");
       o.settings.compute = v == "compute";
+    } else if (a == "--adaptive") {
+      const std::string v = next();
+      if (v != "on" && v != "off") usage_error("--adaptive takes on or off");
+      o.settings.adaptive = v == "on";
+    } else if (!bench && a == "--out-spp") {
+      o.out_spp = next();
     } else if (a == "--env") {
       o.env = next();
     } else if (!bench && a == "--spp") {

@@ -22,6 +22,7 @@ struct Options {
   std::vector<std::string> outs_denoised;
   float denoise_weight = -1.0f;
   std::string out_aux;
+  std::string out_spp;  // render: each pixel's sample count, .pfm
   DenoiseParams denoise_params;  // --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L (tuning)
   RenderSettings settings;
   std::vector<std::string> given;  // the flags given: they win over the scene's <Render>

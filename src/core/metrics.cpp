@@ -51,8 +51,10 @@ double ErrorHistory::exponent() const {
   return std::clamp(-slope, 0.5, 3.0);
 }
 
-ErrorEstimate combine_error(const std::vector<ErrorSums>& tiles, int tiles_x, int tiles_y, int tile, int samples, int k,
-                            double exponent) {
+namespace {
+
+ErrorEstimate combine(const std::vector<ErrorSums>& tiles, int tiles_x, int tiles_y, int tile, int samples, bool snap, double exponent,
+                      double scale) {
   ErrorEstimate e;
   e.tile = tile;
   e.tiles_x = tiles_x;
@@ -63,13 +65,25 @@ ErrorEstimate combine_error(const std::vector<ErrorSums>& tiles, int tiles_x, in
   if (samples < 2 || all.count <= 0) return e;
   e.known = true;
   e.rel_mse_iid = all.iid / all.count;
-  const bool snap = k > 0 && 2 * k <= samples;
   e.exponent = snap ? exponent : 1.0;
-  const double scale = snap ? 1.0 / (std::pow(double(samples) / k, exponent) - 1.0) : 0.0;
   auto of = [&](const ErrorSums& t) { return t.count <= 0 ? 0.0 : (snap ? std::min(t.diff * scale, t.iid) : t.iid) / t.count; };
   e.rel_mse = of(all);
   for (size_t i = 0; i < tiles.size(); ++i) e.tiles[i] = of(tiles[i]);
   return e;
+}
+
+}  // namespace
+
+ErrorEstimate combine_error(const std::vector<ErrorSums>& tiles, int tiles_x, int tiles_y, int tile, int samples, int k,
+                            double exponent) {
+  const bool snap = k > 0 && 2 * k <= samples;
+  const double scale = snap ? 1.0 / (std::pow(double(samples) / k, exponent) - 1.0) : 0.0;
+  return combine(tiles, tiles_x, tiles_y, tile, samples, snap, exponent, scale);
+}
+
+ErrorEstimate combine_error_scaled(const std::vector<ErrorSums>& tiles, int tiles_x, int tiles_y, int tile, int samples, bool snapshot,
+                                   double exponent) {
+  return combine(tiles, tiles_x, tiles_y, tile, samples, snapshot, exponent, 1.0);
 }
 
 std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
@@ -81,6 +95,27 @@ std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::ve
       const size_t p = (size_t(y) * width + x) * 4;
       ErrorSums& t = tiles[size_t(y / tile) * tx + x / tile];
       for (int c = 0; c < 3; ++c) t += error_terms(mean[p + c], variance[p + c], samples, snapshot ? (*snapshot)[p + c] : 0.0);
+    }
+  return tiles;
+}
+
+std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
+                                   const std::vector<float>* snapshot, int width, int height, const PixelCounts& now,
+                                   const PixelCounts* then, double exponent, int tile) {
+  const int tx = (width + tile - 1) / tile, ty = (height + tile - 1) / tile;
+  std::vector<ErrorSums> tiles(size_t(tx) * ty);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const size_t p = (size_t(y) * width + x) * 4;
+      const int n = now.at(x, y), k = snapshot && then ? then->at(x, y) : 0;
+      const bool snap = k > 0 && 2 * k <= n;
+      const double scale = snap ? 1.0 / (std::pow(double(n) / k, exponent) - 1.0) : 0.0;
+      ErrorSums& t = tiles[size_t(y / tile) * tx + x / tile];
+      for (int c = 0; c < 3; ++c) {
+        ErrorSums e = error_terms(mean[p + c], variance[p + c], n, snap ? (*snapshot)[p + c] : 0.0);
+        e.diff = snap ? e.diff * scale : e.iid;
+        t += e;
+      }
     }
   return tiles;
 }

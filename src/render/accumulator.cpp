@@ -29,9 +29,16 @@ void Accumulator::set_aux(bool on) {
   if (width_ > 0) resize(width_, height_);
 }
 
+void Accumulator::set_adaptive(bool on) {
+  if (on == adaptive_) return;
+  adaptive_ = on;
+  restart();
+}
+
 void Accumulator::resize(int width, int height) {
   width_ = width;
   height_ = height;
+  counts_.reset(width, height, params_.tile);
   for (int i = 0; i < 2; ++i) {
     accum_[i] = Texture(width, height, format_, nullptr);
     stats_[i] = Texture(width, height, format_, nullptr);
@@ -53,6 +60,7 @@ Accumulator::Tile Accumulator::begin_tile(const RenderSettings& s) {
   if (next_row_ == 0 && next_column_ == 0) {  // a sweep starts: its sample count is fixed until it ends
     sweep_spp_ = s.spp_per_pass < 1 ? 1 : s.spp_per_pass;
     if (s.sample_limit > 0 && samples_ + sweep_spp_ > s.sample_limit) sweep_spp_ = s.sample_limit - samples_;
+    if (adaptive_) plan_sweep();
   }
   if (next_column_ == 0) {  // a band starts: its rows hold until its last tile is drawn
     const int rows = s.band_rows > 0 ? std::min(s.band_rows, height_) : height_;
@@ -73,6 +81,36 @@ Accumulator::Tile Accumulator::begin_tile(const RenderSettings& s) {
   return t;
 }
 
+void Accumulator::plan_sweep() {
+  // Until uniform_spp every tile alike; then the weights from the variance so far (read
+  // back at uniform_spp and whenever the mean count grew by `refresh`: the decision uses
+  // earlier sweeps only, render/adaptive.h), and this sweep's budget shared by them.
+  const bool uniform = samples_ < params_.uniform_spp;
+  if (!uniform && samples_ >= next_refresh_) {
+    std::vector<float> mean, var;
+    read_mean_variance(mean, var);
+    std::vector<double> rel(counts_.pixels().size(), 0.0);
+    for (int y = 0; y < height_; ++y)
+      for (int x = 0; x < width_; ++x) {
+        const size_t p = (size_t(y) * width_ + x) * 4;
+        const int n = counts_.at(x, y);
+        double r = 0;  // the relative variance per sample, as core/metrics.h's terms: s n/(n-1) / (m^2 + 0.01)
+        for (int c = 0; c < 3; ++c) r += double(std::max(var[p + c], 0.0f)) * n / std::max(n - 1, 1) / (double(mean[p + c]) * mean[p + c] + 0.01);
+        rel[size_t(y / counts_.tile()) * counts_.tiles_x() + x / counts_.tile()] += r / 3.0;
+      }
+    for (size_t t = 0; t < rel.size(); ++t) rel[t] /= counts_.pixels()[t];
+    counts_.set_weights(tile_weights(counts_.pixels(), rel, params_.floor));
+    next_refresh_ = std::max(samples_ + 1, int(std::ceil(samples_ * params_.refresh)));
+  }
+  const std::vector<int>& plan = counts_.plan(sweep_spp_, uniform, params_.max_tile_spp);
+  std::vector<float> texels(plan.size() * 4, 0.0f);
+  for (size_t t = 0; t < plan.size(); ++t) {
+    texels[t * 4] = float(counts_.counts()[t]);
+    texels[t * 4 + 1] = float(plan[t]);
+  }
+  counts_tex_ = Texture(counts_.tiles_x(), counts_.tiles_y(), GL_RGBA32F, texels.data());
+}
+
 void Accumulator::bind_inputs(Program& p, const Tile& t) const {
   p.set("u_accum", int(kAccumUnit));
   p.set("u_stats_in", int(kStatsUnit));
@@ -81,6 +119,11 @@ void Accumulator::bind_inputs(Program& p, const Tile& t) const {
   p.set("u_blend", float(t.spp) / float(samples_ + t.spp));
   accum_[cur_].bind(kAccumUnit);
   stats_[cur_].bind(kStatsUnit);
+  if (adaptive_) {  // PT_ADAPTIVE: each tile's count and samples from the texture instead
+    p.set("u_tile_counts", int(kTileCountsUnit));
+    p.set("u_count_tile", counts_.tile());
+    counts_tex_.bind(kTileCountsUnit);
+  }
   if (aux_) {
     p.set("u_aux0_in", int(kAux0Unit));
     p.set("u_aux1_in", int(kAux1Unit));
@@ -131,6 +174,7 @@ int Accumulator::end_tile(const Tile& t) {
   next_row_ = t.y1 == height_ ? 0 : t.y1;
   if (next_row_ != 0) return 0;
   samples_ += t.spp;
+  if (adaptive_) counts_.commit();
   return t.spp;
 }
 

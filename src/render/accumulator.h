@@ -12,6 +12,7 @@
 #include "gpu/gl_check.h"
 #include "gpu/program.h"
 #include "gpu/texture.h"
+#include "render/adaptive.h"
 
 namespace pt {
 
@@ -40,15 +41,27 @@ class Accumulator {
   void restart() {
     samples_ = 0;
     paths_ = 0;
+    counts_.restart();
+    next_refresh_ = 0;
     ++epoch_;
     next_row_ = next_column_ = 0;
     needs_clear_ = true;
   }
+  // Samples per pixel: with adaptive sampling the image's mean count (each sweep adds its
+  // samples per pixel on average: render/adaptive.h), else every pixel's.
   int samples() const { return samples_; }
   // Paths traced since the restart (pixels x samples per pixel of every finished tile): the
   // progress of a sweep in progress too, for a throughput figure finer than whole sweeps
   // (the peer benchmark, tools/peers/).
   double paths() const { return paths_; }
+  // Adaptive sampling (RenderSettings::adaptive): per-tile counts, a program built with
+  // PT_ADAPTIVE reading them (bind_inputs). A change restarts.
+  void set_adaptive(bool on);
+  bool adaptive() const { return adaptive_; }
+  // With adaptive(): each tile's count (a tile of counts().tile() pixels), null when off.
+  const TileCounts* tile_counts() const { return adaptive_ ? &counts_ : nullptr; }
+  // The pixel-samples drawn since the restart (every pixel's count, summed).
+  double total_samples() const { return adaptive_ ? counts_.total() : double(samples_) * width_ * height_; }
   int epoch() const { return epoch_; }  // counts restarts: an estimate from another image is stale
   bool mid_sweep() const { return next_row_ != 0 || next_column_ != 0; }
 
@@ -107,6 +120,12 @@ class Accumulator {
   int epoch_ = 0;
   bool needs_clear_ = true;
   bool aux_ = false;
+  bool adaptive_ = false;
+  AdaptiveParams params_;
+  TileCounts counts_;
+  Texture counts_tex_;     // per tile (samples so far, this sweep's samples per pixel)
+  int next_refresh_ = 0;   // the mean count at which the variance is read back again
+  void plan_sweep();       // adaptive: this sweep's counts, uploaded
   int targets() const { return aux_ ? 4 : 2; }
   int width_ = 0, height_ = 0;
 };

@@ -36,6 +36,12 @@ std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot
   a.read_mean_variance(mean, var);
   std::vector<float> snap;
   if (s) snap = read_rgba_float(s->fbo.id(), 0, w, h);
+  if (const TileCounts* c = a.tile_counts()) {
+    if (s && s->counts.size() != c->counts().size()) s = nullptr;  // not taken with these tiles
+    const PixelCounts now{c->tile(), c->tiles_x(), &c->counts()};
+    const PixelCounts then{c->tile(), c->tiles_x(), s ? &s->counts : nullptr};
+    return error_tiles(mean, var, s ? &snap : nullptr, w, h, now, s ? &then : nullptr, history_.exponent(), kTile);
+  }
   return error_tiles(mean, var, s ? &snap : nullptr, w, h, a.samples(), kTile);
 }
 
@@ -45,7 +51,10 @@ void ErrorEstimator::sweep_done(const Accumulator& a) {
   if (n < next_) return;
   // The change since the half-way snapshot, at a power of two: the decay's next point.
   const Snapshot* half = usable(n);
-  if (half && 2 * half->samples == n && n >= 4) {
+  // With adaptive sampling only while every tile has the same count (the uniform start):
+  // D(n/2, n) of tiles at other ratios is not a point of the same curve.
+  const bool equal = !a.tile_counts() || a.tile_counts()->uniform();
+  if (half && 2 * half->samples == n && n >= 4 && equal) {
     ErrorSums all;
     for (const ErrorSums& t : sums(a, half)) all += t;
     history_.record(n, all.diff / all.count);
@@ -59,6 +68,8 @@ void ErrorEstimator::sweep_done(const Accumulator& a) {
   PT_GL_CHECK("glBlitFramebuffer (error snapshot)");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   s.samples = n;
+  if (const TileCounts* c = a.tile_counts()) s.counts = c->counts();
+  else s.counts.clear();
   older_ = 1 - older_;
   while (next_ <= n) next_ *= 2;
 }
@@ -67,6 +78,8 @@ ErrorEstimate ErrorEstimator::estimate(const Accumulator& a) const {
   const bool current = a.epoch() == epoch_ && a.width() == width_ && a.height() == height_;
   const Snapshot* s = current ? usable(a.samples()) : nullptr;
   const int tx = (a.width() + kTile - 1) / kTile, ty = (a.height() + kTile - 1) / kTile;
+  if (a.tile_counts() && s && s->counts.size() == a.tile_counts()->counts().size())
+    return combine_error_scaled(sums(a, s), tx, ty, kTile, a.samples(), true, current ? history_.exponent() : 1.0);
   return combine_error(sums(a, s), tx, ty, kTile, a.samples(), s ? s->samples : 0, current ? history_.exponent() : 1.0);
 }
 

@@ -3,7 +3,9 @@
 // The per-pixel variance comes from the accumulator (accumulated in the integrator's
 // pass, both kernels); this keeps snapshots of the mean at the powers of two of the
 // sample count and the decay of the image's change between them; the estimator itself,
-// its derivation and its calibration are core/metrics.h's.
+// its derivation and its calibration are core/metrics.h's. With adaptive sampling each
+// pixel's terms use its tile's own count, now and at the snapshot (PixelCounts), and the
+// exponent of the decay is the one fitted while every count was still the same.
 #pragma once
 #include <vector>
 
@@ -29,6 +31,7 @@ class ErrorEstimator {
     Texture mean;
     Framebuffer fbo;
     int samples = 0;
+    std::vector<int> counts;  // adaptive sampling: each tile's count then (render/adaptive.h)
   };
   void reset(const Accumulator& a);
   const Snapshot* usable(int samples) const;  // the latest with samples <= n/2

@@ -55,6 +55,7 @@ Features Renderer::features_for(const Scene& scene, RenderMode mode) const {
   f.mode = mode;
   f.compute = using_compute();
   f.aux = settings_.aux;
+  f.adaptive = settings_.adaptive;
   return f;
 }
 
@@ -67,6 +68,7 @@ void Renderer::select_program() {
   f.mode = settings_.mode;
   f.compute = using_compute();
   f.aux = settings_.aux;
+  f.adaptive = settings_.adaptive;
   ProgramCache::Entry& e = programs_.get(f);
   integrator_ = &e.program;
   source_ = &e.source;
@@ -144,9 +146,10 @@ void Renderer::set_settings(const RenderSettings& s) {
   a.band_columns = b.band_columns;
   a.denoise = b.denoise;
   if (!(a == b)) restart();
-  const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute || s.aux != settings_.aux;
+  const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute || s.aux != settings_.aux || s.adaptive != settings_.adaptive;
   settings_ = s;
   accum_.set_aux(s.aux);
+  accum_.set_adaptive(s.adaptive);
   if (new_mode && have_scene_) {
     select_program();
     scene_.update_sh(settings_.mode);

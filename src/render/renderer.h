@@ -37,6 +37,7 @@ struct RenderSettings {
   bool compute = false;  // the compute kernel where the context has one (compute_supported())
   bool aux = false;      // the camera pass also writes the denoiser's first-hit auxiliaries
   float denoise = 0.0f;  // with aux: the denoised image's blend weight in display() (0: raw)
+  bool adaptive = false; // per-tile sample counts from the variance (render/adaptive.h); a change restarts
   ToneMap tonemap = ToneMap::Aces;
   float exposure = 1.0f;
   bool operator==(const RenderSettings&) const = default;

@@ -181,6 +181,7 @@ std::string generate_prelude(const Features& features) {
     }
   if (f.motion) g += "#define HAS_MOTION 1\n";
   if (f.aux) g += "#define PT_AUX 1\n";
+  if (f.adaptive) g += "#define PT_ADAPTIVE 1\n";
   g += "#include \"common.glsl\"\n";
   g += glsl_record(shape_layout()) + glsl_record(material_glsl()) + glsl_record(light_layout());
   g += glsl_record(node_layout()) + glsl_record(prim_layout());

@@ -29,6 +29,9 @@ struct Features {
   // The camera pass also writes the denoiser's first-hit auxiliaries (camera_aux.glsl);
   // a renderer setting too.
   bool aux = false;
+  // Adaptive sampling: each tile's count and samples per pass from a texture
+  // (camera_pass.glsl, render/adaptive.h); a renderer setting too.
+  bool adaptive = false;
   bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
   bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
   bool has_light(ShapeKind k) const { return lights >> int(k) & 1u; }
@@ -45,14 +48,15 @@ struct Features {
     std::string k;
     auto put = [&k](uint32_t v) { k.append(reinterpret_cast<const char*>(&v), sizeof v); };
     put(shapes), put(materials), put(lights), put(punctual), put(material_features);
-    put(uint32_t(env_map) | uint32_t(motion) << 1 | uint32_t(compute) << 2 | uint32_t(aux) << 3 | uint32_t(mode) << 8);
+    put(uint32_t(env_map) | uint32_t(motion) << 1 | uint32_t(compute) << 2 | uint32_t(aux) << 3 | uint32_t(adaptive) << 4 | uint32_t(mode) << 8);
     return k;
   }
   static Features of(const Scene& scene);
 };
 // A field added to Features must go into key() too (else two programs share a cache slot).
-// (The fields are ordered so that Features has no padding: any new one changes its size.)
-static_assert(sizeof(Features) == 5 * sizeof(uint32_t) + sizeof(RenderMode) + 4 * sizeof(bool),
+// Five words, the mode and five flags (with 3 bytes of padding): a new word changes the
+// size; a sixth flag would fit the padding, so a new flag must be added to key() by hand.
+static_assert(sizeof(Features) == 5 * sizeof(uint32_t) + sizeof(RenderMode) + 8,
               "a new field of Features: add it to key() and to this count");
 static_assert(kNumShapeKinds <= 32 && kNumLightKinds <= 32 && kNumMaterialKinds <= 32 && kNumMaterialFeatures <= 32,
               "Features: one bit per kind in 32");
