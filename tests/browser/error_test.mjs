@@ -1,7 +1,7 @@
 // Browser test of the page's estimated error (issue 14; Debian's Chromium, headless,
 // SwiftShader):
 //
-//   node tests/browser/error_test.mjs [--web build/web] [--out build/browser-test]
+//   node tests/browser/error_test.mjs [--web build/web] [--out build/browser-test] [--only readout,target,cost,denoise,first]
 //
 // Serves the web build (tools/serve.mjs) and checks, on scene2 (the Cornell box) at
 // 128x128: the panel's estimated relMSE appears and falls as samples grow (at 4x the
@@ -23,7 +23,7 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { check, launcher, options, run, startServer } from "./app_lib.mjs";
 
-const { webDir, outDir } = options("error_test.mjs", []);
+const { groups, webDir, outDir } = options("error_test.mjs", ["readout", "target", "cost", "denoise", "first"]);
 mkdirSync(outDir, { recursive: true });
 const shot = (page, name) => page.screenshot({ path: join(outDir, `error-${name}.png`) });
 
@@ -224,11 +224,16 @@ async function firstImage(launch, url) {
         f.complete === null ? `none in ${wait / 1000} s; black rows per frame ${rows(f.blackRows)}` : `${ms.toFixed(0)} ms`);
   check("that first image is a coarse level, no full-resolution sample in it", f.divisor > 1 && f.samples === 0,
         `divisor ${f.divisor}, samples ${f.samples}`);
-  await until(page, () => window.ptLoadStatus().coarseLevels >= 3, null, 30000).catch(() => {});
+  // 10 s later: the finest complete level is shown while the full-resolution mean has no
+  // complete sweep (with SwiftShader at 1280x800 the pacer's draws are small, so the 1/4
+  // and 1/2 levels take tens of frames: docs/benchmarks.md).
+  await sleep(10000);
   const later = await status(page);
-  await shot(page, "first-image-half");
-  check("the ladder goes on to 1/2 with the full-resolution mean still empty or accumulating",
-        later.coarseLevels >= 3 && (later.shownDivisor === 2 || (later.shownDivisor === 1 && later.samples > 0)),
+  await shot(page, "first-image-later");
+  console.log(`# 10 s later: ${later.coarseLevels} coarse levels complete, shown at 1/${later.shownDivisor}, ${later.samples} full-resolution samples`);
+  const expected = later.samples > 0 ? 1 : [1, 8, 4, 2][later.coarseLevels];
+  check("later, the finest complete coarse level is shown until a full-resolution sweep is complete",
+        later.coarseLevels >= 1 && later.shownDivisor === expected,
         JSON.stringify({ levels: later.coarseLevels, divisor: later.shownDivisor, samples: later.samples }));
   check("no console errors (first image)", errors.length === 0, errors.join("; "));
   await context.close();
@@ -239,12 +244,14 @@ async function main() {
   const userDir = mkdtempSync(join(tmpdir(), "pt-chromium-"));
   try {
     const context = await launcher(userDir)({ viewport: { width: 960, height: 640 } });
-    const reached = await readout(context, server.url);
-    await target(context, server.url, reached * 1.5);
-    await cost(context, server.url);
-    await denoiser(context, server.url);
+    if (groups.has("readout") || groups.has("target")) {
+      const reached = await readout(context, server.url);
+      if (groups.has("target")) await target(context, server.url, reached * 1.5);
+    }
+    if (groups.has("cost")) await cost(context, server.url);
+    if (groups.has("denoise")) await denoiser(context, server.url);
     await context.close();
-    await firstImage(launcher(userDir), server.url);
+    if (groups.has("first")) await firstImage(launcher(userDir), server.url);
   } finally {
     server.child.kill();
     rmSync(userDir, { recursive: true, force: true });
