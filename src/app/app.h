@@ -38,6 +38,7 @@ struct AppOptions {
   std::optional<ToneMap> tonemap;
   std::optional<float> exposure;                        // fixed; unset = auto
   float target_relmse = 0.0f;                            // stop once the estimate is at most this; 0 = none
+  bool coarse = true;                                    // the coarse first image after a restart (render/coarse.h)
   std::string gl_renderer;                               // shown in the panel and the stats
   // Hands a finished file to the platform (the page downloads it); unset: no save buttons.
   std::function<void(const std::string& name, const std::vector<uint8_t>& bytes, const char* mime)> save_file;
@@ -67,6 +68,7 @@ class App {
   std::string view_query() const;
   void set_fixed_size(int w, int h);                     // 0, 0: follow the framebuffer
   void set_sample_limit(int n);
+  void set_denoise(bool on) { denoise_ = on; }           // as the panel's toggle (ptSetDenoise)
   // false: error() says why and the current scene stays. keep_camera: a reload of an
   // edited scene keeps the view. The scene is then prepared (packed, its BVH built) in
   // slices of a few milliseconds (work(), and frame()) and its program built in the

@@ -185,7 +185,12 @@ void App::draw_panel() {
     ImGui::Text("samples    %d", renderer_->samples());
   ImGui::Text("samples/s  %.1f", samples_per_second_);
   ImGui::Text("elapsed    %.1f s", std::max(0.0, end_ms - restart_ms_) * 1e-3);
-  ImGui::Text("resolution %d x %d", renderer_->width(), renderer_->height());
+  // Until the first full-resolution sweep is complete the image shown is a coarse level
+  // (render/coarse.h), said on this row (the rows below keep their places).
+  if (const int d = renderer_->shown_divisor(); d > 1)
+    ImGui::Text("resolution %d x %d (first image: 1/%d)", renderer_->width(), renderer_->height(), d);
+  else
+    ImGui::Text("resolution %d x %d", renderer_->width(), renderer_->height());
   draw_view_controls();
   draw_error();  // after the view's controls: their place stays where the browser tests click
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -201,10 +206,12 @@ void App::draw_panel() {
 void App::draw_error() {
   const int n = renderer_->samples();
   if (error_history_.empty()) {
-    ImGui::TextUnformatted(n < 2 ? "est. relMSE (from 2 samples)" : "est. relMSE ...");
+    // The estimate is of the full-resolution mean, raw: never of a coarse first image nor
+    // of the denoised one shown.
+    ImGui::TextUnformatted(n < 2 ? "est. relMSE of the raw image (from 2 samples)" : "est. relMSE ...");
   } else {
     const ErrorPoint& last = error_history_.back();
-    ImGui::Text("est. relMSE %.4g at %d samples", last.rel_mse, last.samples);
+    ImGui::Text("est. relMSE %.4g at %d samples (raw)", last.rel_mse, last.samples);
   }
   double a = 0, b = 0;
   const bool trend = error_trend(a, b);

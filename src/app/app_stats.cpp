@@ -80,7 +80,10 @@ RenderSettings App::render_settings() const {
   const int n = renderer_->samples();
   const int stop = target_stop_at_ > 0 ? target_stop_at_ : estimate_due_ && renderer_->mid_sweep() ? n + 1 : 0;
   if (stop > 0 && (s.sample_limit <= 0 || stop < s.sample_limit)) s.sample_limit = stop;
-  s.aux = denoise_;
+  // The auxiliaries stay on with the denoiser off: they draw no random numbers (the mean is
+  // the same bytes, docs/denoise.md), so the toggle changes the image shown and never
+  // restarts the estimate (tests/browser/error_test.mjs).
+  s.aux = true;
   s.denoise = denoise_ ? denoise_blend() : 0.0f;
   return s;
 }
@@ -147,6 +150,11 @@ std::string App::error_fields() const {
   j += ",\"targetRelMSE\":" + json_number(target_relmse_);
   j += ",\"targetReachedAt\":" + std::to_string(target_stop_at_);
   j += ",\"denoise\":" + json_number(denoise_ ? denoise_blend() : 0.0);
+  // The coarse first image (render/coarse.h): the divisor of the image shown (1: full
+  // resolution) and the coarse levels complete since the restart.
+  j += ",\"epoch\":" + std::to_string(renderer_->accumulator().epoch());  // counts restarts
+  j += ",\"shownDivisor\":" + std::to_string(renderer_->shown_divisor());
+  j += ",\"coarseLevels\":" + std::to_string(renderer_->ladder().completed());
   j += ",\"estimates\":" + std::to_string(estimates_) + ",\"estimateMs\":" + json_number(estimate_ms_);
   j += ",\"errorHistory\":[";
   for (size_t i = 0; i < error_history_.size(); ++i)

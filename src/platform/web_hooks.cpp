@@ -81,6 +81,7 @@ AppOptions page_options(int argc, char** argv) {
       o.camera_yaw_pitch = glm::vec2(v[3], v[4]);
     }
     if (key == "--bounces") o.bounces = std::atoi(value.c_str());
+    if (key == "--coarse") o.coarse = value != "0";
     if (key == "--target") o.target_relmse = std::max(0.0f, std::strtof(value.c_str(), nullptr));
     ToneMap tm;
     if (key == "--tonemap" && tonemap_from_name(value.c_str(), &tm)) o.tonemap = tm;
@@ -139,6 +140,11 @@ EMSCRIPTEN_KEEPALIVE void pt_set_size(int w, int h) {
 
 EMSCRIPTEN_KEEPALIVE void pt_set_sample_limit(int n) {
   if (g_app) g_app->set_sample_limit(n);
+}
+
+// The denoiser's toggle, as the panel's checkbox (ptSetDenoise).
+EMSCRIPTEN_KEEPALIVE void pt_set_denoise(int on) {
+  if (g_app) g_app->set_denoise(on != 0);
 }
 
 // A slice of the scene preparation in progress; 1 while more remains (pt_js_pump_work).

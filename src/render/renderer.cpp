@@ -145,11 +145,13 @@ void Renderer::set_settings(const RenderSettings& s) {
   a.band_rows = b.band_rows;
   a.band_columns = b.band_columns;
   a.denoise = b.denoise;
+  a.coarse = b.coarse;  // what the display shows first, not the full-resolution estimate
   if (!(a == b)) restart();
   const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute || s.aux != settings_.aux || s.adaptive != settings_.adaptive;
   settings_ = s;
   accum_.set_aux(s.aux);
   accum_.set_adaptive(s.adaptive);
+  for (Accumulator& c : coarse_) c.set_aux(s.aux);  // the same program draws them
   if (new_mode && have_scene_) {
     select_program();
     scene_.update_sh(settings_.mode);
@@ -163,13 +165,55 @@ void Renderer::resize(int width, int height) {
     throw GlError("a " + std::to_string(width) + "x" + std::to_string(height) + " render exceeds GL_MAX_VIEWPORT_DIMS " +
                   std::to_string(limits_.max_viewport[0]) + "x" + std::to_string(limits_.max_viewport[1]));
   accum_.resize(width, height);
+  for (int l = 0; l < CoarseLadder::kLevels; ++l)
+    coarse_[l].resize(CoarseLadder::level_size(width, l), CoarseLadder::level_size(height, l));
+}
+
+const CoarseLadder& Renderer::ladder() const {
+  if (ladder_epoch_ != accum_.epoch()) {  // any restart of the estimate (a resize, set_aux too)
+    ladder_epoch_ = accum_.epoch();
+    ladder_.restart();
+  }
+  return ladder_;
+}
+
+int Renderer::shown_divisor() const {
+  const int l = coarse_on() ? ladder().shown(samples()) : -1;
+  return l < 0 ? 1 : CoarseLadder::divisor(l);
+}
+
+void Renderer::coarse_step() {
+  const int l = ladder_.drawing();
+  Accumulator& c = coarse_[l];
+  // One sample per pixel, one sweep per level, in tiles of the pacer's size in pixels.
+  RenderSettings s = settings_;
+  s.spp_per_pass = 1;
+  s.sample_limit = 0;
+  CoarseLadder::draw_size(settings_.band_rows, settings_.band_columns, width(), height(), c.width(), c.height(), s.band_rows,
+                          s.band_columns);
+  if (!c.mid_sweep()) c.restart();  // a level is one sweep: its mean starts from nothing
+  const Accumulator::Tile t = c.begin_tile(s);
+  draw_tile(c, t, CoarseLadder::divisor(l));
+  ladder_.drew();
+  if (c.end_tile(t) > 0) ladder_.level_done();
 }
 
 int Renderer::step() {
   last_draw_samples_ = 0;
   if (!integrator_ || converged()) return 0;
+  if (coarse_on() && accum_.samples() == 0 && !accum_.mid_sweep() && ladder().drawing() >= 0) {
+    coarse_step();
+    return 0;
+  }
   const Accumulator::Tile t = accum_.begin_tile(settings_);
-  const int w = width(), h = height();
+  draw_tile(accum_, t, 1);
+  const int added = accum_.end_tile(t);
+  if (added > 0) error_.sweep_done(accum_);
+  return added;
+}
+
+void Renderer::draw_tile(Accumulator& a, const Accumulator::Tile& t, int divisor) {
+  const int w = width(), h = height();  // the full image's: its frame and aspect
   Program& p = *integrator_;
   p.use();
   const CameraBasis cb = camera_basis(camera_, float(w) / float(h));
@@ -180,17 +224,18 @@ int Renderer::step() {
   p.set("u_cam_fwd", cb.forward);
   p.set("u_cam_right", cb.right);
   p.set("u_cam_up", cb.up);
-  p.set("u_size", glm::vec2(float(w), float(h)));
+  // Pixel px of a coarse level covers the full image's [px, px + 1) x divisor.
+  p.set("u_size", glm::vec2(float(w), float(h)) / float(divisor));
   p.set("u_lens_radius", camera_.aperture);
   p.set("u_lights_uniform", camera_sealed_off(seal_lo_, seal_hi_, camera_.position, camera_.aperture) ? 1 : 0);
   p.set("u_focal_distance", camera_.focal_distance);
   // Moving spheres are bounded over [0, motion_bound].
   p.set("u_shutter", std::min(camera_.shutter, scene_.motion_bound()));
   scene_.bind(p, settings_.mode);
-  accum_.bind_inputs(p, t);
+  a.bind_inputs(p, t);
   if (using_compute()) {
 #ifndef __EMSCRIPTEN__
-    accum_.bind_images();
+    a.bind_images();
     p.set("u_origin", glm::ivec2(t.x0, t.y0));
     p.set("u_end", glm::ivec2(t.x1, t.y1));
     glDispatchCompute(GLuint((t.x1 - t.x0 + 7) / 8), GLuint((t.y1 - t.y0 + 7) / 8), 1);
@@ -200,8 +245,8 @@ int Renderer::step() {
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
 #endif
   } else {
-    glBindFramebuffer(GL_FRAMEBUFFER, accum_.target_fbo());
-    glViewport(0, 0, w, h);  // full size: gl_FragCoord stays in image pixels
+    glBindFramebuffer(GL_FRAMEBUFFER, a.target_fbo());
+    glViewport(0, 0, a.width(), a.height());  // the target's size: gl_FragCoord stays in its pixels
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
     if (t.whole) {
@@ -215,12 +260,16 @@ int Renderer::step() {
     PT_GL_CHECK("glDrawArrays (integrator)");
   }
   last_draw_samples_ = long(t.x1 - t.x0) * (t.y1 - t.y0) * t.spp;
-  const int added = accum_.end_tile(t);
-  if (added > 0) error_.sweep_done(accum_);
-  return added;
 }
 
-void Renderer::display(int x, int y) const { display_.draw(shown(), settings_.tonemap, settings_.exposure, x, y, vao_); }
+void Renderer::display(int x, int y) const {
+  if (const int d = shown_divisor(); d > 1) {
+    const Texture& coarse = coarse_[ladder().shown(samples())].radiance();
+    display_.draw(coarse, settings_.tonemap, settings_.exposure, x, y, vao_, d, width(), height());
+    return;
+  }
+  display_.draw(shown(), settings_.tonemap, settings_.exposure, x, y, vao_);
+}
 
 const Texture& Renderer::shown() const {
   if (!settings_.aux || settings_.denoise <= 0.0f || samples() == 0) return accum_.radiance();
@@ -250,6 +299,8 @@ std::vector<float> Renderer::read_radiance() const { return accum_.read_radiance
 std::vector<float> Renderer::read_variance() const { return accum_.read_variance(); }
 
 std::vector<uint8_t> Renderer::read_display() const {
+  if (const int d = shown_divisor(); d > 1)
+    return display_.read(coarse_[ladder().shown(samples())].radiance(), settings_.tonemap, settings_.exposure, vao_, d, width(), height());
   return display_.read(shown(), settings_.tonemap, settings_.exposure, vao_);
 }
 

@@ -12,6 +12,7 @@
 #include "core/tonemap.h"
 #include "gpu/gl_objects.h"
 #include "render/accumulator.h"
+#include "render/coarse.h"
 #include "render/denoise.h"
 #include "render/display.h"
 #include "render/error_estimator.h"
@@ -38,6 +39,10 @@ struct RenderSettings {
   bool aux = false;      // the camera pass also writes the denoiser's first-hit auxiliaries
   float denoise = 0.0f;  // with aux: the denoised image's blend weight in display() (0: raw)
   bool adaptive = false; // per-tile sample counts from the variance (render/adaptive.h); a change restarts
+  // The coarse first image (render/coarse.h): after each restart, sweeps at 1/8, 1/4 and
+  // 1/2 of each axis into targets of their own, shown until the first full-resolution
+  // sweep is complete. The page's; off for the command line (its output stays the same).
+  bool coarse = false;  // (not with adaptive: its program reads tile counts the levels lack)
   ToneMap tonemap = ToneMap::Aces;
   float exposure = 1.0f;
   bool operator==(const RenderSettings&) const = default;
@@ -76,7 +81,7 @@ class Renderer {
   void set_camera(const Camera& camera);
   void set_settings(const RenderSettings& s);
   void resize(int width, int height);
-  void restart() { accum_.restart(); }
+  void restart() { accum_.restart(); }  // the coarse ladder follows (ladder())
 
   // One draw: the next tile of the current sweep, unless the sample limit is reached. A
   // sweep is bands of band_rows rows, bottom to top (the whole image when 0); a band is
@@ -85,11 +90,21 @@ class Renderer {
   // draws and every pixel is still drawn once per sweep. A sweep adds spp_per_pass
   // samples to every pixel; returns the samples added when this draw completed a sweep,
   // else 0. Tiles keep each draw short (no watchdog, a responsive page); the estimate is
-  // the same.
+  // the same. With settings().coarse, the draws after a restart are first the coarse
+  // ladder's (render/coarse.h: targets of its own, tiles of the same size in pixels); they
+  // return 0 and add nothing to the full-resolution mean.
   int step();
-  bool mid_sweep() const { return accum_.mid_sweep(); }
+  // A sweep is in progress: of the full-resolution mean, or the coarse ladder has started.
+  bool mid_sweep() const { return accum_.mid_sweep() || (coarse_on() && accum_.samples() == 0 && ladder().started()); }
+  // The divisor of each axis of the image display() shows: 1 (the full-resolution mean),
+  // or a coarse level's 8, 4, 2 while no full-resolution sweep is complete.
+  int shown_divisor() const;
+  // The ladder runs where the settings ask for it, but not with adaptive sampling (its
+  // program reads the tile counts, which the coarse levels do not have).
+  bool coarse_on() const { return settings_.coarse && !settings_.adaptive; }
+  const CoarseLadder& ladder() const;  // since the last restart
   // The pixel samples the last step() drew: its pixels times the sweep's samples per
-  // pixel (0 when it drew nothing).
+  // pixel (0 when it drew nothing); a coarse draw's pixels are its own (fewer).
   long last_draw_samples() const { return last_draw_samples_; }
   // One draw, waited for, then a restart: drivers that compile a program's machine code
   // at its first use (Mesa's llvmpipe does, for compute kernels) do it here, outside a
@@ -100,7 +115,8 @@ class Renderer {
     restart();
   }
   // Tone-mapped image into the bound draw framebuffer at viewport (x, y, w, h) = size():
-  // with settings().aux and denoise > 0 the denoised one (shown()).
+  // with settings().aux and denoise > 0 the denoised one (shown()); while shown_divisor()
+  // > 1 the coarse level's, upscaled (nearest; render/display.h says why).
   void display(int x, int y) const;
   // What display() and read_display() show: the mean, or with the denoiser on its image,
   // filtered again at 1, 2, 4, ... samples and on a restart (in between the last one).
@@ -148,7 +164,7 @@ class Renderer {
   // The estimated relMSE of the current mean, whole image and per tile (reads back three
   // float images; core/metrics.h says how it is estimated).
   ErrorEstimate estimate_error() const { return error_.estimate(accum_); }
-  // Tone-mapped 8-bit RGBA, rows bottom to top.
+  // Tone-mapped 8-bit RGBA as display() shows it (a coarse level upscaled), rows bottom to top.
   std::vector<uint8_t> read_display() const;
   using Counters = RenderCounters;  // totals since the last restart, counted in the shader
   Counters counters() const { return accum_.counters(); }
@@ -156,11 +172,18 @@ class Renderer {
  private:
   Features features_for(const Scene& scene, RenderMode mode) const;
   void select_program();  // the cached (or newly built) program for features_ + settings_.mode
+  // One draw of tile t into accumulator a, an image of the full image's frame at 1/divisor
+  // of each axis (1: the full-resolution mean).
+  void draw_tile(Accumulator& a, const Accumulator::Tile& t, int divisor);
+  void coarse_step();  // one draw of the ladder's level in progress
   GlLimits limits_;       // first: the constructor checks them before building anything
   GLuint vao_ = 0;        // the fullscreen triangle's (no attributes)
   int vao_made_in_ = gl_objects::generation();
   Display display_;
   Accumulator accum_;
+  Accumulator coarse_[CoarseLadder::kLevels];  // the ladder's levels, with auxiliaries as accum_
+  mutable CoarseLadder ladder_;
+  mutable int ladder_epoch_ = -1;  // accum_'s epoch the ladder belongs to: a restart restarts it
   ErrorEstimator error_;  // snapshots of accum_'s mean for its error estimate
   mutable Denoiser denoiser_;
   mutable struct { int epoch = -1, samples = -1; float weight = -1.0f; } denoised_;  // what denoiser_ holds

@@ -1,21 +1,29 @@
 // Browser test of the page's estimated error (issue 14; Debian's Chromium, headless,
 // SwiftShader):
 //
-//   node tests/browser/error_test.mjs [--web build/web] [--out build/browser-test]
+//   node tests/browser/error_test.mjs [--web build/web] [--out build/browser-test] [--only readout,target,cost,denoise,first]
 //
 // Serves the web build (tools/serve.mjs) and checks, on scene2 (the Cornell box) at
 // 128x128: the panel's estimated relMSE appears and falls as samples grow (at 4x the
 // samples, well below the earlier value: it falls about as 1/n); with &target=X set to a
 // value the first page reached, the sample count stops growing with the estimate at or
 // below X, and the address keeps &target=; no console errors. Prints the cost of one
-// estimate (read-backs and sums) at 128x128 and at 960x640 (the canvas, the closed room). Screenshots go
-// to the out folder. 'ok - NAME' / 'not ok - NAME: why', then a summary.
-import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
+// estimate (read-backs and sums) at 128x128 and at 960x640 (the canvas, the closed room).
+// The denoiser's toggle (ptSetDenoise, as the panel's checkbox) at 8 samples: off shows
+// another image, on the same one again, and the accumulation (its bytes, its sample count,
+// its restarts) never changes. The coarse first image (render/coarse.h) at 1280x800: from
+// the frame the scene is ready to the first frame whose canvas has no black row (read
+// from the canvas right after each of the page's frames), under 2 s, and that image is a
+// coarse level. Screenshots go to the out folder (error-first-image.png is that frame's
+// canvas). 'ok - NAME' / 'not ok - NAME: why', then a summary. PT_COARSE=0 in the
+// environment opens that page with &coarse=0 (the time before the ladder, and a check that
+// fails without it), PT_FIRST_IMAGE_S=N waits up to N s for it (default 30).
+import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { check, launcher, options, run, startServer } from "./app_lib.mjs";
 
-const { webDir, outDir } = options("error_test.mjs", []);
+const { groups, webDir, outDir } = options("error_test.mjs", ["readout", "target", "cost", "denoise", "first"]);
 mkdirSync(outDir, { recursive: true });
 const shot = (page, name) => page.screenshot({ path: join(outDir, `error-${name}.png`) });
 
@@ -44,6 +52,10 @@ async function readout(context, url) {
   const first = await status(page);
   await until(page, (n) => window.ptLoadStatus().relMSESamples >= 4 * n, first.relMSESamples);
   const later = await status(page);
+  // ptStats (which reads the image back) reports the same estimate as the cheap status.
+  const both = await page.evaluate(() => [window.ptStats(), window.ptLoadStatus()]);
+  check("ptStats() reports the estimate of the status", both[0].relMSE === both[1].relMSE && both[0].relMSESamples === both[1].relMSESamples &&
+        both[0].relMSE > 0, `ptStats ${both[0].relMSE} at ${both[0].relMSESamples}, status ${both[1].relMSE} at ${both[1].relMSESamples}`);
   await shot(page, "readout");
   const h = later.errorHistory;
   console.log(`# estimated relMSE at 128x128: ${h.map(([t, e, n]) => `${n} spp ${e.toPrecision(3)} (${t.toFixed(1)} s)`).join(", ")}`);
@@ -109,15 +121,137 @@ async function cost(context, url) {
   await page.close();
 }
 
+// The denoiser's toggle changes the image shown, not the accumulation.
+async function denoiser(context, url) {
+  const errors = [];
+  const page = await openPage(context, `${url}?scene=${scene}&size=128x128&limit=8`, errors);
+  await until(page, () => window.ptLoadStatus().samples >= 8);
+  await sleep(500);  // a few frames: the display shows the denoised image of all 8 samples
+  const look = () => page.evaluate(() => ({ s: window.ptLoadStatus(), display: window.ptDisplay(), radiance: window.ptRadiance() }));
+  const on = await look();
+  await shot(page, "denoise-on");
+  await page.evaluate(() => window.ptSetDenoise(false));
+  await until(page, () => window.ptLoadStatus().denoise === 0);
+  await sleep(500);
+  const off = await look();
+  await shot(page, "denoise-off");
+  await page.evaluate(() => window.ptSetDenoise(true));
+  await until(page, () => window.ptLoadStatus().denoise > 0);
+  await sleep(500);
+  const again = await look();
+  let changed = 0;
+  for (let i = 0; i < on.display.length; i += 4)
+    changed += on.display[i] !== off.display[i] || on.display[i + 1] !== off.display[i + 1] || on.display[i + 2] !== off.display[i + 2];
+  const pixels = on.display.length / 4;
+  const same = (a, b) => a.length === b.length && a.every((v, i) => v === b[i]);
+  console.log(`# denoiser toggle at 8 spp (128x128): ${changed} of ${pixels} displayed pixels change; blend weight ${on.s.denoise.toFixed(3)}`);
+  check("the denoiser is on at first, and off after the toggle", on.s.denoise > 0 && off.s.denoise === 0, `${on.s.denoise}, ${off.s.denoise}`);
+  check("toggling the denoiser changes the image shown", changed > pixels / 4, `${changed} of ${pixels} pixels changed`);
+  check("toggling it back shows the same denoised image again", same(on.display, again.display), "the displayed bytes differ");
+  check("the accumulation is untouched by the toggle (its bytes, samples and restarts)",
+        same(on.radiance, off.radiance) && same(on.radiance, again.radiance) && on.s.samples === 8 && off.s.samples === 8 &&
+        again.s.samples === 8 && on.s.epoch === off.s.epoch && on.s.epoch === again.s.epoch,
+        JSON.stringify({ samples: [on.s.samples, off.s.samples, again.s.samples], epoch: [on.s.epoch, off.s.epoch, again.s.epoch],
+                         radianceSame: [same(on.radiance, off.radiance), same(on.radiance, again.radiance)] }));
+  check("no console errors (denoiser toggle)", errors.length === 0, errors.join("; "));
+  await page.close();
+}
+
+// Right after each of the page's frames (the page's requestAnimationFrame callbacks are
+// wrapped, so the canvas still holds the frame just drawn): the frame the first scene is
+// ready (loads >= 1) and the first one after it whose canvas, right of the panel, has no
+// black row; that frame's pixels as a PNG data URL.
+function firstImageProbe() {
+  const f = (window.ptFirstImage = { ready: null, complete: null, frames: 0, blackRows: [], divisor: 0, samples: 0, image: null });
+  const raf = window.requestAnimationFrame.bind(window);
+  window.requestAnimationFrame = (cb) => raf((t) => {
+    cb(t);
+    if (f.complete !== null || typeof window.ptLoadStatus !== "function") return;
+    let s = null;
+    try { s = window.ptLoadStatus(); } catch { return; }
+    if (!s) return;
+    if (f.ready === null) {
+      if (s.loads < 1) return;
+      f.ready = performance.now();
+    }
+    const canvas = document.getElementById("canvas");
+    const gl = canvas.getContext("webgl2");
+    const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+    const ui = window.ptUi();
+    const x0 = ui && !ui.panelCollapsed ? Math.min(w - 1, Math.ceil(ui.panel[0] + ui.panel[2])) : 0;
+    const px = new Uint8Array(w * h * 4);
+    const fb = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fb);
+    let black = 0;
+    for (let y = 0; y < h; ++y) {
+      let lit = false;
+      for (let x = x0, i = (y * w + x0) * 4; x < w && !lit; ++x, i += 4) lit = px[i] + px[i + 1] + px[i + 2] > 3;
+      black += !lit;
+    }
+    ++f.frames;
+    f.blackRows.push(black);
+    if (black > 0) return;
+    f.complete = performance.now();
+    f.divisor = s.shownDivisor;
+    f.samples = s.samples;
+    const c = document.createElement("canvas");
+    c.width = w, c.height = h;
+    const img = new ImageData(w, h);
+    for (let y = 0; y < h; ++y) img.data.set(px.subarray((h - 1 - y) * w * 4, (h - y) * w * 4), y * w * 4);  // rows top down
+    c.getContext("2d").putImageData(img, 0, 0);
+    f.image = c.toDataURL("image/png");
+  });
+}
+
+// The coarse first image at 1280x800 (the default scene, the canvas's size).
+async function firstImage(launch, url) {
+  const context = await launch({ viewport: { width: 1280, height: 800 } });
+  await context.addInitScript(firstImageProbe);
+  const errors = [];
+  const wait = 1000 * Number(process.env.PT_FIRST_IMAGE_S ?? 30);
+  const page = await openPage(context, `${url}?scene=${scene}${process.env.PT_COARSE === "0" ? "&coarse=0" : ""}`, errors);
+  await until(page, () => window.ptFirstImage.complete !== null, null, wait).catch(() => {});
+  const f = await page.evaluate(() => window.ptFirstImage);
+  if (f.image) writeFileSync(join(outDir, "error-first-image.png"), Buffer.from(f.image.split(",")[1], "base64"));
+  const ms = f.complete !== null ? f.complete - f.ready : NaN;
+  const rows = (b) => (b.length > 16 ? `${b.slice(0, 8).join(",")},...,${b.slice(-8).join(",")}` : b.join(","));
+  const s = await status(page);
+  console.log(`# first complete image at 1280x800: ${ms.toFixed(0)} ms after the scene was ready (${f.frames} frames; ` +
+              `black rows per frame ${rows(f.blackRows)}), shown at 1/${f.divisor}, full-resolution samples then ${f.samples}`);
+  check("a complete image is on the canvas within 2 s of the scene being ready (1280x800)", ms < 2000,
+        f.complete === null ? `none in ${wait / 1000} s; black rows per frame ${rows(f.blackRows)}` : `${ms.toFixed(0)} ms`);
+  check("that first image is a coarse level, no full-resolution sample in it", f.divisor > 1 && f.samples === 0,
+        `divisor ${f.divisor}, samples ${f.samples}`);
+  // 10 s later: the finest complete level is shown while the full-resolution mean has no
+  // complete sweep (with SwiftShader at 1280x800 the pacer's draws are small, so the 1/4
+  // and 1/2 levels take tens of frames: docs/benchmarks.md).
+  await sleep(10000);
+  const later = await status(page);
+  await shot(page, "first-image-later");
+  console.log(`# 10 s later: ${later.coarseLevels} coarse levels complete, shown at 1/${later.shownDivisor}, ${later.samples} full-resolution samples`);
+  const expected = later.samples > 0 ? 1 : [1, 8, 4, 2][later.coarseLevels];
+  check("later, the finest complete coarse level is shown until a full-resolution sweep is complete",
+        later.coarseLevels >= 1 && later.shownDivisor === expected,
+        JSON.stringify({ levels: later.coarseLevels, divisor: later.shownDivisor, samples: later.samples }));
+  check("no console errors (first image)", errors.length === 0, errors.join("; "));
+  await context.close();
+}
+
 async function main() {
   const server = await startServer([webDir, "0"]);
   const userDir = mkdtempSync(join(tmpdir(), "pt-chromium-"));
   try {
     const context = await launcher(userDir)({ viewport: { width: 960, height: 640 } });
-    const reached = await readout(context, server.url);
-    await target(context, server.url, reached * 1.5);
-    await cost(context, server.url);
+    if (groups.has("readout") || groups.has("target")) {
+      const reached = await readout(context, server.url);
+      if (groups.has("target")) await target(context, server.url, reached * 1.5);
+    }
+    if (groups.has("cost")) await cost(context, server.url);
+    if (groups.has("denoise")) await denoiser(context, server.url);
     await context.close();
+    if (groups.has("first")) await firstImage(launcher(userDir), server.url);
   } finally {
     server.child.kill();
     rmSync(userDir, { recursive: true, force: true });
