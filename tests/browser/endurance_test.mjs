@@ -103,7 +103,10 @@ async function jsObjectBytes(cdp, saveAs) {
 // --snapshots DIR keeps each measurement's heap snapshot (DIR/round-N.heapsnapshot) for
 // tests/browser/heap_diff.mjs.
 let round = 1;
+// Measured at rest: nothing loading and no program compiling (a compile in flight holds
+// its two GL shaders and ~250 KB of wasm heap until it links; seen at --scale 0.25).
 async function measure(page, cdp) {
+  await until(page, () => { const s = window.ptStats(); return !s.loading && !s.compiling && s.glObjects.shaders === 0; }, null, 120000);
   await page.evaluate(() => performance.clearResourceTimings());
   await cdp.send("HeapProfiler.collectGarbage");
   const js = await cdp.send("Runtime.getHeapUsage");

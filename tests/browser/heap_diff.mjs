@@ -1,15 +1,18 @@
 // What a page's JS heap gained between two heap snapshots (V8's .heapsnapshot JSON, as
 // DevTools or endurance_test.mjs --snapshots DIR writes them):
-//   node tests/browser/heap_diff.mjs BEFORE.heapsnapshot AFTER.heapsnapshot [--most 25] [--paths 3]
+//   node tests/browser/heap_diff.mjs BEFORE.heapsnapshot AFTER.heapsnapshot [--most 25] [--paths 3] [--js 1]
 // Objects whose snapshot id is in AFTER but not in BEFORE (V8 keeps an object's id across
 // snapshots of one page) are the new ones; they are grouped by type and name (a constructor,
 // a string's first characters, a closure's name), the groups with most bytes first, and for
 // the largest groups the shortest retainer path of a few of their objects from the
 // snapshot's root is printed (weak edges not followed), as DevTools' Comparison view and
-// Retainers pane would show them. A tool for finding what the page keeps, not a test.
+// Retainers pane would show them. --js 1: only the kinds endurance_test.mjs counts as JS
+// objects (objects, closures, arrays, strings, numbers). Then the new bytes by type, and the
+// snapshot's total by type against BEFORE's. A tool for finding what the page keeps, not a test.
 import { readFileSync } from "node:fs";
 
-const files = [], opt = { most: 25, paths: 3 };
+const files = [], opt = { most: 25, paths: 3, js: 0 };
+const kJsTypes = new Set(["object", "closure", "array", "string", "concatenated string", "sliced string", "heap number", "regexp", "bigint"]);
 for (let i = 2; i < process.argv.length; ++i) {
   const a = process.argv[i];
   if (a.startsWith("--")) opt[a.slice(2)] = Number(process.argv[++i]);
@@ -83,11 +86,18 @@ function path(n) {
 
 const groups = new Map();
 let newBytes = 0, newCount = 0, allBytes = 0;
+const byType = new Map(), beforeByType = new Map();
+for (let i = 0; i < before.nodes.length; i += before.nn) {
+  const t = before.nodeTypes[before.nodes[i + before.type]];
+  beforeByType.set(t, (beforeByType.get(t) ?? 0) + before.nodes[i + before.size]);
+}
 for (let n = 0; n < N; ++n) {
   const size = S.nodes[n * S.nn + S.size];
   allBytes += size;
-  if (oldIds.has(S.nodes[n * S.nn + S.id])) continue;
   const t = typeOf(n);
+  if (opt.js && !kJsTypes.has(t)) continue;
+  byType.set(t, (byType.get(t) ?? 0) + size);
+  if (oldIds.has(S.nodes[n * S.nn + S.id])) continue;
   const key = t === "string" || t === "concatenated string" || t === "sliced string" ? `${t} ${JSON.stringify(nameOf(n).slice(0, 40))}` : `${t} ${nameOf(n)}`;
   const g = groups.get(key) ?? { bytes: 0, count: 0, nodes: [] };
   g.bytes += size;
@@ -104,3 +114,6 @@ for (const [key, g] of sorted) {
   if (sorted.indexOf(sorted.find(([k]) => k === key)) < 10)
     for (const n of g.nodes) console.log(`    ${path(n)}`);
 }
+console.log("by type, the whole snapshot: BEFORE -> AFTER bytes");
+for (const [t, b] of [...byType.entries()].sort((a, b) => b[1] - a[1]))
+  console.log(`  ${t}: ${beforeByType.get(t) ?? 0} -> ${b} (${b - (beforeByType.get(t) ?? 0) >= 0 ? "+" : ""}${b - (beforeByType.get(t) ?? 0)})`);
