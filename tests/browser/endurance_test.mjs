@@ -7,8 +7,8 @@
 // WebGL context, makes selection edits (the sphere's radius dragged in the Selection panel)
 // and reloads of an edited scene (the dev server's reload loop). --scale 1 is the full run:
 // 200 loads, 20 context losses, 100 edits, 50 reloads; not in CI yet (docs/reliability.md
-// "Hours of use in the page": its status and times). After a first round of each (every scene once, one loss, five
-// edits, two reloads), the wasm heap in use (dlmalloc's count), the live GL objects of the
+// "Hours of use in the page": its status and times). After a first round of each (every
+// scene once, one loss, five edits, two reloads), the wasm heap in use (dlmalloc's count), the live GL objects of the
 // program's GL wrappers (ptStats().glObjects), the WebGL objects the page holds (counted by
 // wrapping WebGL2RenderingContext's create and delete calls in an init script) and the JS
 // heap (after a forced collection, CDP) are recorded; after everything they must be within
