@@ -67,6 +67,7 @@ void frame() {
 
 int main(int argc, char** argv) {
   pt::AppOptions options = pt::web::page_options(argc, argv);
+  pt::web::reuse_gl_names();
   if (!glfwInit()) return pt::web::show_error("GLFW could not start."), 1;
   glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);

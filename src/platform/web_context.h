@@ -15,6 +15,9 @@ void context_rebuilt();  // after every GL object was made again on the restored
 // On a restored context, before anything is made: the lost context's objects are
 // forgotten (the wrappers then drop their names without deleting: gpu/gl_objects.h).
 void forget_lost_objects();
+// Before the first GL object: Emscripten reuses deleted GL names (its tables would
+// otherwise grow by a slot for every object ever made: web_context.cpp).
+void reuse_gl_names();
 // WebGL extensions are off until asked for: ask again on a restored context (Emscripten
 // enables its defaults only when it creates one).
 void enable_extensions();

@@ -1,7 +1,8 @@
-// Shared by the page's application tests (app_test.mjs, load_test.mjs): options, the
-// result list, the dev server, Chromium's flags, and helpers to open and poll the page.
+// Shared by the page's application tests (app_test.mjs, load_test.mjs, endurance_test.mjs...):
+// options, the result list, the dev server, Chromium's flags, and helpers to open and poll
+// the page.
 import { spawn, spawnSync } from "node:child_process";
-import { existsSync, renameSync, writeFileSync } from "node:fs";
+import { existsSync, mkdirSync, mkdtempSync, renameSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -75,6 +76,28 @@ export const liveScene = (sky, cam = "0 0 6") => `<SceneLevel>
 </SceneLevel>
 `;
 export const quad = (h) => `v -${h} -${h} 0\nv ${h} -${h} 0\nv ${h} ${h} 0\nv -${h} ${h} 0\nf 1 2 3 4\n`;
+
+// The dev server (--dev: the reload loop) over a temporary scenes/ folder holding the live
+// scene and its quad.obj, and a fresh Chromium profile: fn({ url, sceneDir, launch }) runs
+// with them (launch(options) opens a browser context); then the server stops and both
+// folders are removed. tmpPrefix names the temporary folder.
+export async function withLiveServer(webDir, tmpPrefix, fn) {
+  const tmp = mkdtempSync(join(tmpdir(), tmpPrefix));
+  const sceneDir = join(tmp, "scenes"), assets = join(tmp, "assets");
+  mkdirSync(sceneDir);
+  mkdirSync(assets);
+  writeFileSync(join(sceneDir, "live.xml"), liveScene("0.5 0.5 0.5"));
+  writeFileSync(join(sceneDir, "quad.obj"), quad(1));
+  const server = await startServer([webDir, "0", "--dev", "--scenes", sceneDir, "--assets", assets]);
+  const userDir = mkdtempSync(join(tmpdir(), "pt-chromium-"));
+  try {
+    await fn({ url: server.url, sceneDir, launch: launcher(userDir) });
+  } finally {
+    server.child.kill();
+    rmSync(userDir, { recursive: true, force: true });
+    rmSync(tmp, { recursive: true, force: true });
+  }
+}
 
 export async function openPage(context, url, errors) {
   const page = await context.newPage();

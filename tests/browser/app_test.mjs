@@ -15,10 +15,9 @@
 // at reduced size and refines at full size; losing and restoring the WebGL context
 // (WEBGL_lose_context) resumes the same image; the device pixel ratio sizes the canvas.
 // Screenshots go to the out folder. 'ok - NAME' / 'not ok - NAME: why', then a summary.
-import { existsSync, mkdirSync, mkdtempSync, renameSync, rmSync, writeFileSync } from "node:fs";
-import { tmpdir } from "node:os";
+import { mkdirSync } from "node:fs";
 import { join } from "node:path";
-import { camOf, check, checkWebBuild, launcher, liveScene, openPage, options, put, quad, run, shot as shotIn, startServer, stats, until } from "./app_lib.mjs";
+import { camOf, check, checkWebBuild, liveScene, openPage, options, put, quad, run, shot as shotIn, stats, until, withLiveServer } from "./app_lib.mjs";
 
 const { groups, webDir, outDir } = options("app_test.mjs", ["dev", "view"]);
 const shot = (page, name) => shotIn(page, name, outDir);
@@ -236,31 +235,18 @@ async function viewChecks(context, url) {
 async function main() {
   mkdirSync(outDir, { recursive: true });
   checkWebBuild(webDir);
-  const tmp = mkdtempSync(join(tmpdir(), "pt-app-test-"));
-  const scenes = join(tmp, "scenes"), assets = join(tmp, "assets");
-  mkdirSync(scenes);
-  mkdirSync(assets);
-  writeFileSync(join(scenes, "live.xml"), liveScene("0.5 0.5 0.5"));
-  writeFileSync(join(scenes, "quad.obj"), quad(1));
-  const server = await startServer([webDir, "0", "--dev", "--scenes", scenes, "--assets", assets]);
-  const userDir = mkdtempSync(join(tmpdir(), "pt-chromium-"));
-  const launch = launcher(userDir);
-  try {
+  await withLiveServer(webDir, "pt-app-test-", async ({ url, sceneDir, launch }) => {
     if (groups.has("dev")) {
       const context = await launch({ viewport: { width: 960, height: 640 } });
-      await devChecks(context, server.url, scenes);
+      await devChecks(context, url, sceneDir);
       await context.close();
     }
     if (groups.has("view")) {
       const context = await launch({ viewport: { width: 640, height: 400 }, deviceScaleFactor: 2 });
-      await viewChecks(context, server.url);
+      await viewChecks(context, url);
       await context.close();
     }
-  } finally {
-    server.child.kill();
-    rmSync(userDir, { recursive: true, force: true });
-    rmSync(tmp, { recursive: true, force: true });
-  }
+  });
 }
 
 await run(main);
