@@ -106,7 +106,7 @@ async function phoneChecks(context, url, phone, full) {
   const cdp = await page.context().newCDPSession(page);
   const touch = toucher(cdp);
   const { width: W, height: H } = phone.viewport;
-  await until(page, () => window.ptLoadStatus().samples >= 4);
+  await until(page, () => window.ptLoadStatus().samples >= 4, null, 240000);  // a loaded machine: the first frames are slow
   let s = await stats(page);
   const linked = { cam: camOf(s), mean: s.mean };
   let ui = await page.evaluate(() => window.ptUi());
