@@ -197,8 +197,8 @@ async function phoneChecks(context, url, phone, full) {
     await touch.tap((ui.hide[0] + ui.hide[2] * 0.5) / dpr, (ui.hide[1] + ui.hide[3] * 0.5) / dpr);  // the first row's button
     await until(page, () => window.ptUi().panelCollapsed, null, 10000).catch(() => {});
     check(`${phone.name}: the panel's button collapses it again`, (await page.evaluate(() => window.ptUi())).panelCollapsed);
-    // Expanded again: a drag up on the panel's text (near its bottom, left: "samples ...")
-    // scrolls it, and is not the camera's either.
+    // Expanded again: a drag up on the panel's background scrolls it, and is not the
+    // camera's either.
     await tapBar();
     await until(page, () => !window.ptUi().panelCollapsed && window.ptUi().panel[3] > 0, null, 10000).catch(() => {});
     let panel = null;  // as drawn once its size has settled (auto-resized over a frame or two)
@@ -208,7 +208,10 @@ async function phoneChecks(context, url, phone, full) {
       if (panel && now.join() === panel.join()) break;
       panel = now;
     }
-    const x = panel[0] / dpr + 40, y = (panel[1] + panel[3]) / dpr - 25;
+    // Near the bottom, at the right: the background beside the save buttons (their row
+    // ends well short of the edge; denoise on its own row put them where the left-hand
+    // point was), left of the scroll bar.
+    const x = (panel[0] + panel[2]) / dpr - 25, y = (panel[1] + panel[3]) / dpr - 25;
     await touch.gesture([[x, y]], [[x, y - 200]]);
     await until(page, () => window.ptUi().panelScroll > 0, null, 10000).catch(() => {});
     const scrolled = await page.evaluate(() => window.ptUi());
