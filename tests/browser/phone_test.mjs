@@ -208,10 +208,10 @@ async function phoneChecks(context, url, phone, full) {
       if (panel && now.join() === panel.join()) break;
       panel = now;
     }
-    // Near the bottom, at the right: the background beside the save buttons (their row
-    // ends well short of the edge; denoise on its own row put them where the left-hand
-    // point was), left of the scroll bar.
-    const x = (panel[0] + panel[2]) / dpr - 25, y = (panel[1] + panel[3]) / dpr - 25;
+    // The background right of the denoise checkbox (on its own row on a phone, above the
+    // save buttons, which now sit where the old left-hand point near the bottom was; the
+    // scroll bar is the panel's last 22 CSS px).
+    const x = (panel[0] + panel[2]) / dpr - 120, y = (panel[1] + panel[3]) / dpr - 25 - 1.5 * rowCss;
     await touch.gesture([[x, y]], [[x, y - 200]]);
     await until(page, () => window.ptUi().panelScroll > 0, null, 10000).catch(() => {});
     const scrolled = await page.evaluate(() => window.ptUi());
