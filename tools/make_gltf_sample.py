@@ -2,6 +2,8 @@
 """Writes the project's sample glTF models (our own work, CC0), run once; output committed:
   assets/models/torus-instances.gltf  JSON with an embedded base64 buffer
   assets/models/torus-instances.glb   the same model as binary glTF
+  scenes/gltf/torus-instances.glb     the same .glb again, as a scene of its own in the page's
+                                      gallery (every .xml, .gltf and .glb under scenes/)
 A torus mesh (normals, uv) used by three nodes, two of them children of a rotated parent
 (instancing and a node hierarchy), with a metallic and a diffuse material."""
 import base64, json, math, os, struct
@@ -71,6 +73,7 @@ js = json.dumps(dict(gltf, buffers=[{"byteLength": len(buf)}]), separators=(",",
 while len(js) % 4: js += b" "
 glb = struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(js) + 8 + len(buf))
 glb += struct.pack("<II", len(js), 0x4E4F534A) + js + struct.pack("<II", len(buf), 0x004E4942) + bytes(buf)
-with open(os.path.join(out, "torus-instances.glb"), "wb") as f:
-    f.write(glb)
+for where in (out, os.path.join(os.path.dirname(__file__), "..", "scenes", "gltf")):
+    with open(os.path.join(where, "torus-instances.glb"), "wb") as f:
+        f.write(glb)
 print("wrote", len(idx) // 3, "triangles per torus")

@@ -38,6 +38,7 @@ if [[ -z "${PT_SKIP_BROWSER:-}" ]]; then
   node tests/browser/app_test.mjs --web build/web
   node tests/browser/load_test.mjs --web build/web --site build/site
   node tests/browser/error_test.mjs --web build/web
+  node tests/browser/gltf_page_test.mjs --web build/web --native build/native/pathtracer
   # tests/browser/endurance_test.mjs (hours of use) is not here yet: its wasm-heap and
   # GL-shader checks fail on a program left compiling (docs/reliability.md "Hours of use").
   # tests/browser/phone_test.mjs (phones: touch, the small panel, mobile GPU limits) is run by

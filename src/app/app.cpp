@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "core/image.h"
+#include "scene/gltf_scene.h"
 
 namespace pt {
 namespace {
@@ -50,7 +51,8 @@ void App::scan_scenes() {
   namespace fs = std::filesystem;
   std::error_code ec;
   for (fs::recursive_directory_iterator it(options_.scene_root, ec), end; !ec && it != end; it.increment(ec))
-    if (it->is_regular_file() && it->path().extension() == ".xml") scene_files_.push_back(it->path().string());
+    if (it->is_regular_file() && (it->path().extension() == ".xml" || is_gltf_file(it->path().string())))
+      scene_files_.push_back(it->path().string());  // a .gltf or .glb is a scene of its own (scene/gltf_scene.h)
   std::sort(scene_files_.begin(), scene_files_.end());
 }
 

@@ -25,7 +25,7 @@
 namespace pt {
 
 struct AppOptions {
-  std::string scene_root = "/scenes";                    // searched recursively for *.xml
+  std::string scene_root = "/scenes";                    // searched recursively for *.xml, *.gltf, *.glb
   std::string scene = "/scenes/reference/scene2.xml";    // first scene shown
   std::string env_root = "/assets/env";                  // the shipped HDR maps (*.hdr)
   int width = 0, height = 0;                             // fixed render size; 0 = framebuffer size
@@ -84,6 +84,7 @@ class App {
   bool preparing() const { return loading_ && loading_->pipe->preparing(); }
   const Scene& scene() const { return scene_; }
   std::string scene_files_json() const;                  // Scene::files of the current scene
+  std::string scene_list_json() const;                   // the panel's scene list (the gallery)
   // The platform: keys move the camera only while the canvas has keyboard focus.
   void set_keyboard_enabled(bool on) { keys_enabled_ = on; }
   // Touch (app_interaction.cpp, issue 16): the platform feeds the recogniser the touches

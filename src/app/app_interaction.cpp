@@ -38,6 +38,12 @@ std::string App::scene_files_json() const {
   return j + "]";
 }
 
+std::string App::scene_list_json() const {
+  std::string j = "[";
+  for (const std::string& f : scene_files_) j += (j.size() > 1 ? "," : "") + json_string(f);
+  return j + "]";
+}
+
 glm::ivec2 App::render_size(int fb_w, int fb_h, double now_ms) const {
   glm::vec2 size = options_.width > 0 ? glm::vec2(options_.width, options_.height)
                                       : glm::vec2(float(fb_w), float(fb_h)) * render_scale_;

@@ -154,8 +154,14 @@ void App::draw_panel() {
   if (ImGui::Combo("mode", &mode, kRenderModeLabels, kNumRenderModes)) settings_.mode = RenderMode(mode);
   // The denoiser on the shown image (the accumulation stays the unbiased mean), with its
   // blend weight, which falls as the estimated relMSE does (render/denoise.h). On the
-  // mode's row: the rows below keep their places (the browser tests click them).
+  // mode's row: the rows below keep their places (the browser tests click them), except
+  // on a small screen (compact_) where it would pass the canvas's right edge (a phone:
+  // it was cut off there): then on its own row. The widest label ("denoise 0.00") and
+  // the canvas, not the auto-sized window, decide, so the row does not flip between
+  // frames.
+  const float denoise_width = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("denoise 0.00").x;
   ImGui::SameLine();
+  if (compact_ && ImGui::GetCursorScreenPos().x + denoise_width + ImGui::GetStyle().WindowPadding.x > float(fb_w_)) ImGui::NewLine();
   char denoise_label[48];
   std::snprintf(denoise_label, sizeof denoise_label, denoise_ ? "denoise %.2f###denoise" : "denoise###denoise", double(denoise_blend()));
   ImGui::Checkbox(denoise_label, &denoise_);

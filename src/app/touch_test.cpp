@@ -89,34 +89,137 @@ TEST_CASE("touch: a double tap resets, a slow or distant second tap is a tap", "
   CHECK(!g.double_tap);
 }
 
-TEST_CASE("touch: two fingers pinch and pan, never look nor tap", "[touch]") {
+namespace {
+
+// A two-finger gesture from (a0, b0) to (a1, b1) (CSS pixels, on the phone), as `steps`
+// touchmove events of both fingers (straight lines; finger b reaches its end `lag` of the
+// way behind finger a, catching up in the last event), with a frame (take) after every
+// `per_frame` events (0: one frame at the end), the fingers then lifted. What the frames
+// added up to.
+struct Sum {
+  glm::vec2 pan{0.0f};
+  float pinch = 0.0f;
+  glm::vec2 look{0.0f};
+  bool tap = false;
+  int frames_pinching = 0;  // frames whose pinch was not 0
+};
+Sum two_fingers(glm::vec2 a0, glm::vec2 b0, glm::vec2 a1, glm::vec2 b1, int steps, int per_frame, float lag = 0.0f) {
   TouchRecognizer r = phone();
-  r.down(1, {100, 500}, 0);
-  r.down(2, {300, 500}, 10);  // 200 apart, midpoint (200, 500)
-  r.move(1, {50, 500}, 30);
-  r.move(2, {350, 500}, 30);  // 300 apart: spread by 1.5, the midpoint stays
+  Sum sum;
+  const auto frame = [&] {
+    const TouchGestures g = r.take();
+    sum.pan += g.pan / kDpr;
+    sum.pinch += g.pinch;
+    sum.look += g.look;
+    sum.tap = sum.tap || g.tap.has_value();
+    sum.frames_pinching += g.pinch != 0.0f;
+  };
+  double t = 1000;
+  r.down(1, a0 * kDpr, t);
+  r.down(2, b0 * kDpr, t);
+  for (int k = 1; k <= steps; ++k) {
+    t += 16;
+    const float u = float(k) / float(steps), v = k == steps ? 1.0f : std::max(0.0f, u - lag);
+    r.move(1, (a0 + (a1 - a0) * u) * kDpr, t);  // one event: both fingers, the same time
+    r.move(2, (b0 + (b1 - b0) * v) * kDpr, t);
+    if (per_frame > 0 && k % per_frame == 0) frame();
+  }
+  t += 16;
+  r.up(1, a1 * kDpr, t);
+  r.up(2, b1 * kDpr, t);
+  frame();
+  return sum;
+}
+
+// Few big steps (a slow page: the browser coalesces the moves) and many small ones, a
+// frame after each event, after every few or only at the end.
+const int kGroupings[][2] = {{1, 1}, {2, 1}, {3, 0}, {8, 1}, {8, 3}, {40, 1}, {40, 7}, {40, 0}, {200, 1}};
+
+}  // namespace
+
+TEST_CASE("touch: a pinch moves from its dead zone's edge and never pans, however the moves are grouped", "[touch]") {
+  const float slop = TouchRecognizer::kPinchSlop;
+  for (const auto& [steps, per_frame] : kGroupings) {
+    CAPTURE(steps, per_frame);
+    // Spread from 200 to 300 apart about a fixed midpoint.
+    Sum s = two_fingers({100, 500}, {300, 500}, {50, 500}, {350, 500}, steps, per_frame);
+    CHECK(s.pinch == Approx(std::log(300.0f / (200.0f + slop))));
+    CHECK(s.pan == glm::vec2(0.0f));
+    CHECK(s.look == glm::vec2(0.0f));
+    CHECK(!s.tap);
+    // Together from 220 to 80 apart (phone_test's pinch).
+    s = two_fingers({85, 500}, {305, 500}, {155, 500}, {235, 500}, steps, per_frame);
+    CHECK(s.pinch == Approx(std::log(80.0f / (220.0f - slop))));
+    CHECK(s.pan == glm::vec2(0.0f));
+    // One finger still, the other spreads by 150: the midpoint travels half that, and
+    // the image stays where it is (a pinch, not a pan).
+    s = two_fingers({100, 500}, {200, 500}, {100, 500}, {350, 500}, steps, per_frame);
+    CHECK(s.pinch == Approx(std::log(250.0f / (100.0f + slop))));
+    CHECK(s.pan == glm::vec2(0.0f));
+  }
+}
+
+TEST_CASE("touch: a pan moves from its dead zone's edge and never zooms, a lagging finger neither, however grouped", "[touch]") {
+  const float slop = TouchRecognizer::kPanSlop;
+  for (const auto& [steps, per_frame] : kGroupings) {
+    CAPTURE(steps, per_frame);
+    // Both right by 100 (phone_test's pan): the midpoint travels 100.
+    Sum s = two_fingers({135, 500}, {255, 500}, {235, 500}, {355, 500}, steps, per_frame);
+    CHECK(s.pan.x == Approx(100.0f - slop));
+    CHECK(s.pan.y == Approx(0.0f).margin(1e-3));
+    CHECK(s.pinch == 0.0f);
+    CHECK(s.frames_pinching == 0);
+    // Right and down, the second finger lagging 15% of the way behind (up to 32 px of
+    // spread on the way) and ending 20 px short: still a pan only.
+    s = two_fingers({135, 500}, {255, 500}, {235, 550}, {335, 540}, steps, per_frame, 0.15f);
+    const glm::vec2 travel = 0.5f * (glm::vec2(235, 550) + glm::vec2(335, 540)) - glm::vec2(195, 500);
+    CHECK(s.pan.x == Approx(travel.x * (1.0f - slop / glm::length(travel))).epsilon(1e-3));
+    CHECK(s.pan.y == Approx(travel.y * (1.0f - slop / glm::length(travel))).epsilon(1e-3));
+    CHECK(s.pinch == 0.0f);
+    CHECK(s.frames_pinching == 0);
+  }
+}
+
+TEST_CASE("touch: two fingers trembling in place neither pinch nor pan; both once each dominates", "[touch]") {
+  for (const auto& [steps, per_frame] : kGroupings) {
+    CAPTURE(steps, per_frame);
+    // Inside both dead zones: nothing, and no tap.
+    Sum s = two_fingers({100, 500}, {300, 500}, {95, 506}, {310, 497}, steps, per_frame);
+    CHECK(s.pinch == 0.0f);
+    CHECK(s.pan == glm::vec2(0.0f));
+    CHECK(!s.tap);
+  }
+  // A pinch, then (the same fingers still down) a pan: the pan starts once it dominates
+  // and the pinch goes on (model-viewer and Sketchfab zoom and pan at once).
+  TouchRecognizer r = phone();
+  r.down(1, glm::vec2(100, 500) * kDpr, 0);
+  r.down(2, glm::vec2(300, 500) * kDpr, 0);
+  r.move(1, glm::vec2(50, 500) * kDpr, 16);
+  r.move(2, glm::vec2(350, 500) * kDpr, 16);  // 300 apart
   TouchGestures g = r.take();
-  CHECK(g.pinch == Approx(std::log(1.5f)));
-  CHECK(g.pan.x == Approx(0.0f).margin(1e-4));
-  CHECK(g.look == glm::vec2(0.0f));
-  // Both move right by 40 and down by 10: a pan, no pinch.
-  r.move(1, {90, 510}, 50);
-  r.move(2, {390, 510}, 50);
+  CHECK(g.pinch == Approx(std::log(300.0f / (200.0f + TouchRecognizer::kPinchSlop))));
+  CHECK(g.pan == glm::vec2(0.0f));
+  r.move(1, glm::vec2(90, 500) * kDpr, 32);
+  r.move(2, glm::vec2(390, 500) * kDpr, 32);  // right by 40: travel 40 < spread 100, not yet
+  CHECK(r.take().pan == glm::vec2(0.0f));
+  r.move(1, glm::vec2(200, 500) * kDpr, 48);
+  r.move(2, glm::vec2(500, 500) * kDpr, 48);  // travel 150 > spread 100: a pan, from its edge
   g = r.take();
-  CHECK(g.pan.x == Approx(40.0f));
-  CHECK(g.pan.y == Approx(10.0f));
-  CHECK(g.pinch == Approx(0.0f).margin(1e-5));
-  // Pinched back to 150 apart.
-  r.move(1, {165, 510}, 70);
-  r.move(2, {315, 510}, 70);
-  CHECK(r.take().pinch == Approx(std::log(0.5f)));
+  CHECK(g.pan.x / kDpr == Approx(150.0f - TouchRecognizer::kPanSlop));
+  CHECK(g.pinch == 0.0f);
+  r.move(1, glm::vec2(175, 500) * kDpr, 64);
+  r.move(2, glm::vec2(525, 500) * kDpr, 64);  // spread again: the pinch goes on from where it was
+  g = r.take();
+  CHECK(g.pinch == Approx(std::log(350.0f / 300.0f)));
+  CHECK(g.pan.x == Approx(0.0f).margin(1e-3));
   // One finger lifted: the other goes on looking from where it is, without a jump.
-  r.up(2, {315, 510}, 90);
-  r.move(1, {175, 510}, 100);
+  r.up(2, glm::vec2(525, 500) * kDpr, 80);
+  r.move(1, glm::vec2(175, 500) * kDpr + glm::vec2(10, 0), 96);
   g = r.take();
   CHECK(g.look.x == Approx(10.0f));
   CHECK(g.pinch == 0.0f);
-  r.up(1, {175, 510}, 110);
+  CHECK(g.pan == glm::vec2(0.0f));
+  r.up(1, glm::vec2(175, 500) * kDpr + glm::vec2(10, 0), 110);
   g = r.take();
   CHECK(!g.tap);
   CHECK(!g.double_tap);

@@ -161,6 +161,12 @@ EMSCRIPTEN_KEEPALIVE const char* pt_scene_files() {
   return g_stats.c_str();
 }
 
+// The panel's scene list (every .xml, .gltf and .glb under /scenes), as a JSON array of paths.
+EMSCRIPTEN_KEEPALIVE const char* pt_scene_list() {
+  g_stats = g_app ? g_app->scene_list_json() : std::string("[]");
+  return g_stats.c_str();
+}
+
 // RGBA float radiance of the current estimate; *count receives the number of floats.
 EMSCRIPTEN_KEEPALIVE const float* pt_radiance(int* count) {
   if (!g_app) return *count = 0, nullptr;
