@@ -27,22 +27,12 @@ import csv
 import os
 import re
 import statistics
-import struct
 import subprocess
 import sys
 
+from pfm import read_pfm
+
 SCENES = ["scenes/cornell-box.xml", "scenes/reference/scene0.xml", "scenes/seed/05-cornell-blue-yellow.xml", "scenes/mesh-cube.xml"]
-
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        ch = 3 if kind == b"PF" else 1
-        data = f.read(w * h * ch * 4)
-    fmt = ("<" if scale < 0 else ">") + "%df" % (w * h * ch)
-    return w, h, ch, struct.unpack(fmt, data)
 
 
 def rel_mse(img, ref):

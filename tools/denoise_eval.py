@@ -20,21 +20,18 @@ import argparse
 import json
 import os
 import re
-import struct
 import subprocess
 import sys
+
+from pfm import read_pfm as _read_pfm
 
 DEFAULT_SCENES = ["scenes/cornell-box.xml", "scenes/reference/scene0.xml",
                   "scenes/seed/03-balls-solid-table-wood.xml", "scenes/gltf-instances.xml"]
 
 
 def read_pfm(path):
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        n = 3 if kind == b"PF" else 1
-        data = struct.unpack(("<" if scale < 0 else ">") + "f" * (w * h * n), f.read(4 * w * h * n))
+    """(width, height, RGB values): a one-channel image repeated into three."""
+    w, h, n, data = _read_pfm(path)
     if n == 1:
         data = [v for v in data for _ in range(3)]
     return w, h, data

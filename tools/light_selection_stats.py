@@ -15,21 +15,17 @@ own error (at --ref-spp) is included in the relMSE, equally for every binary.
 """
 import argparse
 import os
-import struct
 import subprocess
 import sys
+
+from pfm import read_pfm as _read_pfm
 
 DEFAULT_SCENES = ["scenes/reference/scene2.xml", "scenes/cornell-box.xml", "scenes/reference/scene0.xml",
                   "scenes/lights/many-lights.xml"]
 
 
 def read_pfm(path):
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        n = w * h * (3 if kind == b"PF" else 1)
-        data = struct.unpack(("<" if scale < 0 else ">") + "%df" % n, f.read(4 * n))
+    w, h, _, data = _read_pfm(path)
     return w, h, data
 
 
