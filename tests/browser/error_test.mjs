@@ -98,13 +98,17 @@ async function target(context, url, x) {
 
 // The cost at the canvas's size: the median of the estimates the page made. The cost is
 // the image's size, not the scene's: the closed room at one bounce samples fast enough.
+// Without the coarse first image (&coarse=0): its levels delay the first full-resolution
+// sweep, which the estimates need, by about a third of a sweep (the group "first" tests it).
 async function cost(context, url) {
   const errors = [];
-  const page = await openPage(context, `${url}?scene=analytic/closed-room.xml&bounces=1&size=960x640`, errors);
+  const page = await openPage(context, `${url}?scene=analytic/closed-room.xml&bounces=1&size=960x640&coarse=0`, errors);
   const costs = [];
   let seen = 0;
   const t0 = Date.now();
-  while (costs.length < 5 && Date.now() - t0 < 90000) {
+  // Five estimates, or at least two after 90 s, or whatever came by 150 s (SwiftShader
+  // reached 2 spp of this image in 90 s on 2026-12-02, an idle 2-core machine).
+  while (costs.length < 5 && !(costs.length >= 2 && Date.now() - t0 > 90000) && Date.now() - t0 < 150000) {
     const s = await status(page);
     if (s.estimates > seen) {
       seen = s.estimates;
@@ -116,7 +120,7 @@ async function cost(context, url) {
   console.log(`# one estimate at 960x640: median ${costs.length ? median(costs).toFixed(1) : "?"} ms of ${costs.length} ` +
               `(${costs.map((c) => c.toFixed(1)).join(", ")}), at ${s.samples} spp`);
   await shot(page, "960x640");
-  check("estimates at 960x640 (their cost printed)", costs.length >= 2, `${costs.length} estimates in 90 s`);
+  check("estimates at 960x640 (their cost printed)", costs.length >= 2, `${costs.length} estimates in ${((Date.now() - t0) / 1000).toFixed(0)} s`);
   check("no console errors (960x640)", errors.length === 0, errors.join("; "));
   await page.close();
 }
