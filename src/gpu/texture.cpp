@@ -32,6 +32,12 @@ void Texture::bind(int unit) const {
   PT_GL_CHECK("glActiveTexture/glBindTexture");
 }
 
+void Texture::upload(const float* rgba) const {
+  glBindTexture(GL_TEXTURE_2D, id_);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w_, h_, GL_RGBA, GL_FLOAT, rgba);
+  PT_GL_CHECK("glTexSubImage2D");
+}
+
 void Texture::reset() {
   if (id_) {
     if (!gl_objects::stale(made_in_)) glDeleteTextures(1, &id_);

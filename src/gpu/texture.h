@@ -32,6 +32,8 @@ class Texture {
   int width() const { return w_; }
   int height() const { return h_; }
   void bind(int unit) const;
+  // Replaces the whole image of an RGBA32F texture (same size): no new GL object.
+  void upload(const float* rgba) const;
 
  private:
   void reset();

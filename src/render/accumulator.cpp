@@ -108,7 +108,11 @@ void Accumulator::plan_sweep() {
     texels[t * 4] = float(counts_.counts()[t]);
     texels[t * 4 + 1] = float(plan[t]);
   }
-  counts_tex_ = Texture(counts_.tiles_x(), counts_.tiles_y(), GL_RGBA32F, texels.data());
+  // Made once per tile grid, then updated in place each sweep.
+  if (counts_tex_.width() != counts_.tiles_x() || counts_tex_.height() != counts_.tiles_y() || !counts_tex_.id())
+    counts_tex_ = Texture(counts_.tiles_x(), counts_.tiles_y(), GL_RGBA32F, texels.data());
+  else
+    counts_tex_.upload(texels.data());
 }
 
 void Accumulator::bind_inputs(Program& p, const Tile& t) const {

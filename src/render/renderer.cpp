@@ -50,8 +50,10 @@ Renderer::~Renderer() {
   }
 }
 
-Features Renderer::features_for(const Scene& scene, RenderMode mode) const {
-  Features f = Features::of(scene);
+Features Renderer::features_for(const Scene& scene, RenderMode mode) const { return with_settings(Features::of(scene), mode); }
+
+// The renderer's own settings on top of a scene's features: the one place they are set.
+Features Renderer::with_settings(Features f, RenderMode mode) const {
   f.mode = mode;
   f.compute = using_compute();
   f.aux = settings_.aux;
@@ -64,12 +66,7 @@ bool Renderer::program_ready(const Scene& scene) { return program_ready(scene, s
 bool Renderer::program_ready(const Scene& scene, RenderMode mode) { return programs_.ready(features_for(scene, mode)); }
 
 void Renderer::select_program() {
-  Features f = features_;
-  f.mode = settings_.mode;
-  f.compute = using_compute();
-  f.aux = settings_.aux;
-  f.adaptive = settings_.adaptive;
-  ProgramCache::Entry& e = programs_.get(f);
+  ProgramCache::Entry& e = programs_.get(with_settings(features_, settings_.mode));
   integrator_ = &e.program;
   source_ = &e.source;
 }

@@ -171,6 +171,7 @@ class Renderer {
 
  private:
   Features features_for(const Scene& scene, RenderMode mode) const;
+  Features with_settings(Features f, RenderMode mode) const;
   void select_program();  // the cached (or newly built) program for features_ + settings_.mode
   // One draw of tile t into accumulator a, an image of the full image's frame at 1/divisor
   // of each axis (1: the full-resolution mean).
