@@ -23,18 +23,16 @@ seeds_for() {  # extra seed folders: the malformed files of the target's formats
   esac
 }
 mkdir -p build/fuzz/artifacts
-for t in "${targets[@]}"; do
-  work="build/fuzz/corpus-$t"
+# One target's run; its summary goes to build/fuzz/$t.out, its exit status to $t.status.
+run_target() {
+  local t=$1 work="build/fuzz/corpus-$1" log="build/fuzz/$1.log" status=0 dict=()
   mkdir -p "$work"
   # The kept corpus (what the long runs found, minimised: tools/fuzz_device.sh) seeds it.
   [[ -f "tests/fuzz/kept/$t.tar.gz" ]] && tar xzf "tests/fuzz/kept/$t.tar.gz" -C "$work"
-  dict=()
   [[ -f "tests/fuzz/$t.dict" ]] && dict=(-dict="tests/fuzz/$t.dict")
   echo "== fuzz $t for ${seconds} s"
   # -timeout: one input taking over 10 s is a finding (a hang); -rss_limit_mb: so is 2 GB.
   # Crashes, leaks, UBSan reports and uncaught exceptions all end the run non-zero.
-  log="build/fuzz/$t.log"
-  status=0
   # shellcheck disable=SC2046
   build/fuzz/fuzz_"$t" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -max_len=65536 -print_final_stats=1 -artifact_prefix="build/fuzz/artifacts/$t-" \
@@ -43,7 +41,21 @@ for t in "${targets[@]}"; do
   if [[ $status -ne 0 ]]; then
     grep -E -A30 "==[0-9]+==ERROR|runtime error|uncaught|deadly signal|Timeout" "$log" | head -60 || tail -40 "$log"
     echo "fuzz $t: FINDING (exit $status; input in build/fuzz/artifacts/, log $log)"
-    exit 1
   fi
+  return "$status"
+}
+# The targets run side by side, PT_FUZZ_JOBS at a time (default: one per core); each is
+# one process, so the time per target is the same and the wall time is shared.
+jobs_max="${PT_FUZZ_JOBS:-$(nproc)}"
+for t in "${targets[@]}"; do
+  while (( $(jobs -rp | wc -l) >= jobs_max )); do wait -n || true; done
+  ( run_target "$t" >"build/fuzz/$t.out" 2>&1; echo $? >"build/fuzz/$t.status" ) &
 done
+wait
+failed=0
+for t in "${targets[@]}"; do
+  cat "build/fuzz/$t.out"
+  [[ "$(cat "build/fuzz/$t.status")" == 0 ]] || failed=1
+done
+[[ $failed == 0 ]] || exit 1
 echo "== fuzz: no findings"
