@@ -226,7 +226,7 @@ async function main() {
     // The first round, then the baseline. Each round ends with a context loss, and the
     // measurement is taken once the live scene is back: a loss empties the program cache,
     // which then holds the live scene's program alone, in every round alike. (The cache
-    // keeps each program's generated source, 30-150 KB of wasm heap; measured after a
+    // keeps each program's generated source, 49-95 KB of text; measured after a
     // round's last load instead, its content, and the heap, depended on the scenes since
     // the last loss: 793 KB after the first round, 875 KB after the second, at --scale 0.2.)
     for (const _ of scenes) await loadNext();
