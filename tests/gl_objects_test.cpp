@@ -5,6 +5,7 @@
 // the same counters through ptStats().glObjects.
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <string>
 
 #include "gl_context.h"
@@ -72,4 +73,36 @@ TEST_CASE("a scene's textures go with it: what stays after a scene depends on th
   r.step();
   INFO("after the plain scene alone: " << counts_text(alone) << " after the mapped one, then the plain one: " << counts_text(gl_objects::live()));
   CHECK(gl_objects::live()[gl_objects::kTexture] == alone[gl_objects::kTexture]);
+}
+
+// A build started and never asked for (a page's load replaced before its program was used;
+// one built ahead for settings that changed on the way) is finished by poll_programs(),
+// which the page calls every frame, idle or not: its two shaders and its sources' copies do
+// not stay until that feature set is used again (the long-use test saw 2 shaders and
+// 250 KB of wasm heap pending for good). The program itself stays cached.
+TEST_CASE("a program built ahead and never used is finished by the renderer's poll", "[gpu][leaks][compile]") {
+  test_gl();
+  const Scene shown = load_scene_file(repo_path("scenes/reference/scene2.xml"));
+  const Scene ahead = load_scene_file(repo_path("scenes/analytic/closed-room.xml"));  // other kinds
+  Renderer r;
+  r.resize(8, 8);
+  r.set_scene(shown);
+  r.step();
+  const auto alone = gl_objects::live();
+  REQUIRE(r.pending_programs().empty());
+  r.program_ready(ahead);  // started, and then the page moves on
+  REQUIRE(r.pending_programs().size() == 1);
+  CHECK(gl_objects::live()[gl_objects::kShader] == alone[gl_objects::kShader] + 2);
+  const auto t0 = std::chrono::steady_clock::now();
+  while (!r.pending_programs().empty() && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120)) {
+    r.poll_programs();  // a frame of the page at its sample limit: no draws
+  }
+  INFO("after the first scene alone: " << counts_text(alone) << " after the poll: " << counts_text(gl_objects::live()));
+  CHECK(r.pending_programs().empty());
+  CHECK(gl_objects::live()[gl_objects::kShader] == alone[gl_objects::kShader]);
+  CHECK(gl_objects::live()[gl_objects::kProgram] == alone[gl_objects::kProgram] + 1);
+  const size_t built = r.programs_compiled();
+  r.set_scene(ahead);  // the finished program is used as it is
+  CHECK(r.programs_compiled() == built);
+  CHECK(r.step() >= 0);
 }

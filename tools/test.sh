@@ -47,7 +47,9 @@ if [[ -z "${PT_SKIP_BROWSER:-}" ]]; then
   node tests/browser/gltf_page_test.mjs --web build/web --native build/native/pathtracer
   phase "phone_test"
   node tests/browser/phone_test.mjs --web build/web
-  # tests/browser/endurance_test.mjs (hours of use) is not here yet: its wasm-heap and
-  # GL-shader checks fail on a program left compiling (docs/reliability.md "Hours of use").
+  phase "endurance_test"
+  # Hours of use, shortened (every scene, then 3 rounds of loads, a context loss, edits and
+  # reloads); --scale 1 is the full run, by hand (docs/reliability.md "Hours of use").
+  node tests/browser/endurance_test.mjs --web build/web --native build/native/pathtracer --scale 0.2
 fi
 echo "== all tests passed in $(( $(date +%s) - start )) s"

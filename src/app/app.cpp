@@ -26,6 +26,12 @@ App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make
   settings_.sample_limit = options_.sample_limit;
   settings_.coarse = options_.coarse;
   settings_.band_rows = FramePacer::kFirstBandRows;
+  // The auxiliaries stay on with the denoiser off: they draw no random numbers (the mean is
+  // the same bytes, docs/denoise.md), so the toggle changes the image shown and never
+  // restarts the estimate (tests/browser/error_test.mjs). Set here, in the settings every
+  // path hands the renderer (a frame's, a load's, a restored context's): a load set with
+  // aux off built a second program for each new scene and left one compiling for good.
+  settings_.aux = true;
   renderer_->set_settings(settings_);
   scan_scenes();
   env_panel_.scan(options_.env_root);

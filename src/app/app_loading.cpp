@@ -98,6 +98,7 @@ void App::load_failed(std::string path, std::string why) {  // copies: loading_ 
 }
 
 void App::poll_loading() {
+  renderer_->poll_programs();  // builds done in the background are finished, even while idle
   work(kFrameWorkMs);  // the frame's own slice; the page adds slices between frames
   if (!loading_) return;
   const std::string path = loading_->pipe->path();

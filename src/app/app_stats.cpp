@@ -80,10 +80,7 @@ RenderSettings App::render_settings() const {
   const int n = renderer_->samples();
   const int stop = target_stop_at_ > 0 ? target_stop_at_ : estimate_due_ && renderer_->mid_sweep() ? n + 1 : 0;
   if (stop > 0 && (s.sample_limit <= 0 || stop < s.sample_limit)) s.sample_limit = stop;
-  // The auxiliaries stay on with the denoiser off: they draw no random numbers (the mean is
-  // the same bytes, docs/denoise.md), so the toggle changes the image shown and never
-  // restarts the estimate (tests/browser/error_test.mjs).
-  s.aux = true;
+  // s.aux is on in settings_ itself (App's constructor says why).
   s.denoise = denoise_ ? denoise_blend() : 0.0f;
   return s;
 }
@@ -201,6 +198,11 @@ std::string App::stats_json() const {
   for (int k = 0; k < gl_objects::kKinds; ++k)
     j += std::string(k ? "," : "") + "\"" + gl_objects::kNames[size_t(k)] + "\":" + std::to_string(gl_objects::live()[size_t(k)]);
   j += "}";
+  // Programs started and not finished (each described): none once the page idles.
+  j += ",\"pendingPrograms\":[";
+  const std::vector<std::string> pending = renderer_->pending_programs();
+  for (size_t i = 0; i < pending.size(); ++i) j += (i ? "," : "") + json_string(pending[i]);
+  j += "]";
 #ifdef __EMSCRIPTEN__
   j += ",\"heapUsed\":" + std::to_string(mallinfo().uordblks);
 #endif

@@ -28,6 +28,8 @@ class Program {
   static Program start_compute(const ShaderSource& cs);
 #endif
   bool completed() const;
+  // finish() has run (or the program was built at once): no shaders or sources are held.
+  bool finished() const { return vs_ == 0; }
   // Waits for the result; throws GlError with the mapped log if compiling or linking failed.
   void finish();
   static bool parallel_compile();  // the driver offers KHR_parallel_shader_compile

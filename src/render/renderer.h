@@ -145,6 +145,9 @@ class Renderer {
   const ShaderSource& integrator_source() const { return *source_; }
   double compile_ms() const { return integrator_ ? integrator_->compile_ms() : 0.0; }
   size_t programs_compiled() const { return programs_.size(); }
+  // Builds started and not finished (ProgramCache::poll, pending): the page polls every frame.
+  void poll_programs() { programs_.poll(); }
+  std::vector<std::string> pending_programs() const { return programs_.pending(); }
   // The acceleration structure of the current scene.
   struct BvhStats {
     int primitives = 0, nodes = 0, depth = 0;

@@ -6,10 +6,11 @@
 // 1.3-million-triangle bench scene, which load_test.mjs loads), loses and restores the
 // WebGL context, makes selection edits (the sphere's radius dragged in the Selection panel)
 // and reloads of an edited scene (the dev server's reload loop). --scale 1 is the full run:
-// 200 loads, 20 context losses, 100 edits, 50 reloads; not in CI yet (docs/reliability.md
-// "Hours of use in the page": its status and times). After a first round of each (every
-// scene once, one loss, five edits, two reloads), the wasm heap in use (dlmalloc's count), the live GL objects of the
-// program's GL wrappers (ptStats().glObjects), the WebGL objects the page holds (counted by
+// 200 loads, 20 context losses, 100 edits, 50 reloads, by hand; tools/test.sh runs
+// --scale 0.2 (40 loads, 4 losses, 20 edits, 10 reloads: the first round, then 3 measured
+// rounds of each; docs/reliability.md "Hours of use in the page" has the times). After a
+// first round of each (every scene once, one loss, five edits, two reloads), the wasm heap
+// in use (dlmalloc's count), the live GL objects of the program's GL wrappers (ptStats().glObjects), the WebGL objects the page holds (counted by
 // wrapping WebGL2RenderingContext's create and delete calls in an init script) and the JS
 // heap (after a forced collection, CDP) are recorded; after everything they must be within
 // 5% of those values (GL objects: equal counts; a count below 20 may differ by at most one;
@@ -77,15 +78,21 @@ function shippedScenes() {
 }
 
 // The bytes of the page's JavaScript objects, from a heap snapshot after a collection:
-// objects, closures, arrays, strings and numbers. Not counted: V8's compiled code (it
-// tiers up for minutes) and native objects, which hold the browser's bounded buffers
-// (console messages for DevTools, performance entries, DevTools' network log).
-// The console messages' arguments are JS strings, though, kept by V8's inspector for a
-// DevTools client (Playwright has Runtime enabled) up to its cap of 1,000 messages
-// (tests/browser/console_bound.mjs shows the cap): measure() counts the heap with them and,
-// checked, without them (Runtime.discardConsoleEntries empties that buffer first).
+// objects, closures, arrays, strings and numbers, and the characters of external strings,
+// which live outside V8's heap: TextDecoder's strings (so every UTF8ToString and
+// FS.readFile as text) get their header's size (~60 bytes) and their characters a native
+// node "system / ExternalStringData" (identical texts decoded twice share one). Apart,
+// the backing stores of ArrayBuffers ("system / JSArrayBufferData", not the wasm memory's,
+// whose use heapUsed measures: skipped by its byte length); apart because they are mostly
+// the page's package data (6.6 MB, constant), which would drown the objects' 5%.
+// Not counted: V8's compiled code (it tiers up for minutes) and other native objects, which
+// hold the browser's bounded buffers (console messages for DevTools, performance entries,
+// DevTools' network log). The console messages' arguments are JS strings, though, kept by
+// V8's inspector for a DevTools client (Playwright has Runtime enabled) up to its cap of
+// 1,000 messages (tests/browser/console_bound.mjs shows the cap): measure() counts the heap
+// with them and, checked, without them (Runtime.discardConsoleEntries empties that buffer).
 const kJsTypes = new Set(["object", "closure", "array", "string", "concatenated string", "sliced string", "heap number", "regexp", "bigint"]);
-async function jsObjectBytes(cdp, saveAs) {
+async function jsObjectBytes(cdp, wasmBytes, saveAs) {
   const chunks = [];
   const take = (e) => chunks.push(e.chunk);
   cdp.on("HeapProfiler.addHeapSnapshotChunk", take);
@@ -94,10 +101,16 @@ async function jsObjectBytes(cdp, saveAs) {
   if (saveAs) writeFileSync(saveAs, chunks.join(""));
   const snap = JSON.parse(chunks.join(""));
   const fields = snap.snapshot.meta.node_fields, types = snap.snapshot.meta.node_types[0];
-  const n = fields.length, type = fields.indexOf("type"), size = fields.indexOf("self_size");
-  let bytes = 0;
-  for (let i = 0; i < snap.nodes.length; i += n) if (kJsTypes.has(types[snap.nodes[i + type]])) bytes += snap.nodes[i + size];
-  return bytes;
+  const n = fields.length, type = fields.indexOf("type"), size = fields.indexOf("self_size"), name = fields.indexOf("name");
+  let bytes = 0, chars = 0, buffers = 0;
+  for (let i = 0; i < snap.nodes.length; i += n) {
+    const t = types[snap.nodes[i + type]], b = snap.nodes[i + size];
+    if (kJsTypes.has(t)) bytes += b;
+    else if (t !== "native") continue;
+    else if (snap.strings[snap.nodes[i + name]] === "system / ExternalStringData") chars += b;
+    else if (snap.strings[snap.nodes[i + name]] === "system / JSArrayBufferData" && b !== wasmBytes) buffers += b;
+  }
+  return { bytes: bytes + chars, chars, buffers };
 }
 
 // --snapshots DIR keeps each measurement's heap snapshot (DIR/round-N.heapsnapshot) for
@@ -107,17 +120,19 @@ async function measure(page, cdp) {
   await page.evaluate(() => performance.clearResourceTimings());
   await cdp.send("HeapProfiler.collectGarbage");
   const js = await cdp.send("Runtime.getHeapUsage");
-  const jsWithConsole = await jsObjectBytes(cdp);
+  const wasmBytes = await page.evaluate(() => (window.Module?.HEAP8 ?? window.HEAP8)?.buffer.byteLength ?? -1);
+  const jsWithConsole = (await jsObjectBytes(cdp, wasmBytes)).bytes;
   await cdp.send("Runtime.discardConsoleEntries");
   await cdp.send("HeapProfiler.collectGarbage");
-  const jsObjects = await jsObjectBytes(cdp, opt.snapshots && join(opt.snapshots, `round-${round++}.heapsnapshot`));
+  const { bytes: jsObjects, chars, buffers } = await jsObjectBytes(cdp, wasmBytes, opt.snapshots && join(opt.snapshots, `round-${round++}.heapsnapshot`));
   const s = await stats(page);
   const webgl = await page.evaluate(() => ({ ...window.ptWebglLive }));
   // The lengths of Emscripten's tables from GL names to WebGL objects (printed, not checked:
   // what they hold is in jsObjects).
   const tables = await page.evaluate(() => Object.fromEntries(["textures", "framebuffers", "programs", "shaders", "vaos", "buffers"]
     .map((k) => [k, GL[k] ? GL[k].length : -1])));
-  return { heapUsed: s.heapUsed, glObjects: s.glObjects, webgl, jsObjects, jsWithConsole, jsHeap: js.usedSize, tables };
+  return { heapUsed: s.heapUsed, glObjects: s.glObjects, webgl, jsObjects, chars, buffers, jsWithConsole, jsHeap: js.usedSize, tables,
+           pending: s.pendingPrograms };
 }
 
 function within(name, first, last) {
@@ -130,6 +145,8 @@ function within(name, first, last) {
   };
   cmp("wasm heap in use", first.heapUsed, last.heapUsed, false);
   cmp("JS objects", first.jsObjects, last.jsObjects, false);
+  lines.push(`of which external strings' characters ${first.chars} -> ${last.chars}`);
+  cmp("ArrayBuffers' stores (not the wasm memory)", first.buffers, last.buffers, false);
   lines.push(`JS objects with the console buffer (not checked: bounded by the browser) ${first.jsWithConsole} -> ${last.jsWithConsole}`);
   lines.push(`V8 heap in use (not checked: compiled code and the browser's buffers too) ${first.jsHeap} -> ${last.jsHeap}`);
   for (const k of Object.keys(first.glObjects)) cmp(`gl ${k}`, first.glObjects[k], last.glObjects[k], true);
@@ -206,23 +223,28 @@ async function main() {
       for (let i = 0; i < reloads; ++i) await reload();
     };
 
-    // The first round, then the baseline.
+    // The first round, then the baseline. Each round ends with a context loss, and the
+    // measurement is taken once the live scene is back: a loss empties the program cache,
+    // which then holds the live scene's program alone, in every round alike. (The cache
+    // keeps each program's generated source, 49-95 KB of text; measured after a
+    // round's last load instead, its content, and the heap, depended on the scenes since
+    // the last loss: 793 KB after the first round, 875 KB after the second, at --scale 0.2.)
     for (const _ of scenes) await loadNext();
-    await loseAndRestore();
     await liveWork(5, 2);
+    await loseAndRestore();
     const first = await measure(page, cdp);
-    console.log(`# first round in ${((Date.now() - t0) / 1000).toFixed(0)} s: ${JSON.stringify(done)}`);
+    console.log(`# first round in ${((Date.now() - t0) / 1000).toFixed(0)} s: ${JSON.stringify(done)}; wasm heap ${first.heapUsed}, JS objects ${first.jsObjects} (${first.chars} external strings' characters), ArrayBuffers ${first.buffers}, gl ${JSON.stringify(first.glObjects)}, programs pending ${JSON.stringify(first.pending)}`);
 
-    // The rest, interleaved: scenes, a context loss, edits and reloads of the live scene.
+    // The rest, interleaved: scenes, edits and reloads of the live scene, a context loss.
     const rounds = Math.max(total.losses - 1, 1);
     for (let r = 0; r < rounds; ++r) {
       const share = (k) => Math.ceil((total[k] - done[k]) / (rounds - r));
       const loads = share("loads"), edits = share("edits"), reloads = share("reloads");
       for (let i = 0; i < loads; ++i) await loadNext();
-      if (done.losses < total.losses) await loseAndRestore();
       await liveWork(edits, reloads);
+      await loseAndRestore();
       const m = await measure(page, cdp);
-      console.log(`# round ${r + 2}: ${JSON.stringify(done)}; wasm heap ${m.heapUsed}, JS objects ${m.jsObjects} (${m.jsWithConsole} with the console buffer), V8 heap ${m.jsHeap}, gl ${JSON.stringify(m.glObjects)}, Emscripten's GL tables ${JSON.stringify(m.tables)}, ${((Date.now() - t0) / 1000).toFixed(0)} s`);
+      console.log(`# round ${r + 2}: ${JSON.stringify(done)}; wasm heap ${m.heapUsed}, JS objects ${m.jsObjects} (${m.chars} external strings' characters; ${m.jsWithConsole} with the console buffer), V8 heap ${m.jsHeap}, gl ${JSON.stringify(m.glObjects)}, Emscripten's GL tables ${JSON.stringify(m.tables)}, programs pending ${JSON.stringify(m.pending)}, ${((Date.now() - t0) / 1000).toFixed(0)} s`);
     }
     const last = await measure(page, cdp);
     const seconds = (Date.now() - t0) / 1000;

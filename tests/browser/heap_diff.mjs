@@ -7,12 +7,14 @@
 // the largest groups the shortest retainer path of a few of their objects from the
 // snapshot's root is printed (weak edges not followed), as DevTools' Comparison view and
 // Retainers pane would show them. --js 1: only the kinds endurance_test.mjs counts as JS
-// objects (objects, closures, arrays, strings, numbers). Then the new bytes by type, and the
+// objects (objects, closures, arrays, strings, numbers, and the native nodes of external
+// strings' characters and ArrayBuffers' backing stores, which it counts too, apart). Then the new bytes by type, and the
 // snapshot's total by type against BEFORE's. A tool for finding what the page keeps, not a test.
 import { readFileSync } from "node:fs";
 
 const files = [], opt = { most: 25, paths: 3, js: 0 };
 const kJsTypes = new Set(["object", "closure", "array", "string", "concatenated string", "sliced string", "heap number", "regexp", "bigint"]);
+const kOutside = new Set(["system / ExternalStringData", "system / JSArrayBufferData"]);  // as endurance_test.mjs
 for (let i = 2; i < process.argv.length; ++i) {
   const a = process.argv[i];
   if (a.startsWith("--")) opt[a.slice(2)] = Number(process.argv[++i]);
@@ -95,7 +97,7 @@ for (let n = 0; n < N; ++n) {
   const size = S.nodes[n * S.nn + S.size];
   allBytes += size;
   const t = typeOf(n);
-  if (opt.js && !kJsTypes.has(t)) continue;
+  if (opt.js && !kJsTypes.has(t) && !(t === "native" && kOutside.has(nameOf(n)))) continue;
   byType.set(t, (byType.get(t) ?? 0) + size);
   if (oldIds.has(S.nodes[n * S.nn + S.id])) continue;
   const key = t === "string" || t === "concatenated string" || t === "sliced string" ? `${t} ${JSON.stringify(nameOf(n).slice(0, 40))}` : `${t} ${nameOf(n)}`;
