@@ -12,7 +12,8 @@
 // viewport). Timing starts at the first complete image; over `seconds` it counts:
 // - paths/s: the page's own count of paths (pixel samples) issued (ptLoadStatus().paths);
 //   the raw pass between its first and last whole draw within the window (each draw is
-//   waited for with a 1-pixel read-back, so the count is of finished paths);
+//   waited for with a 1-pixel read-back, so the count is of finished paths; its window is
+//   twice as long: a whole draw of scene2 at 512x512 takes 10-20 s here);
 // - UI frames/s: requestAnimationFrame callbacks per second (a counter of its own);
 // - the page's frame statistics where the build has them (ptLoadStatus().frameStats:
 //   frames run, presents, CPU ms in the frame's parts).
@@ -76,7 +77,7 @@ async function runOnce(build, mount, raw) {
       }
       const t1 = performance.now() - t0, s1 = window.ptLoadStatus();
       return { points, tMs: t1, rafs: window.ptRafCount - r0, s0: s0.frameStats ?? null, s1: s1.frameStats ?? null, samples: s1.samples };
-    }, seconds * 1e3);
+    }, (raw ? 2 : 1) * seconds * 1e3);
     const p = result.points;
     let pathsPerS;
     if (raw) {  // between the first and the last finished draw seen in the window
