@@ -6,10 +6,13 @@
 // Serves the web build with tools/serve.mjs, opens the page on scene2 at 128x128 and checks:
 //   no console errors; the sample limit stops each time exactly; the image converges (a
 //   running mean, not the last pass); its mean radiance matches the native headless render
-//   of the same scene, size and spp; the canvas shows that image; a scene that fails to load
+//   of the same scene, size and spp; the canvas shows that image, and after a camera move
+//   the new one (most frames present nothing: App::present_due); a scene that fails to load
 //   reports its error and the previous one keeps rendering; the seven seed scenes and the
 //   Cornell box render with the native image's mean. Saves the page's screenshot and
-//   the native PNG in the out folder, and prints the page's speed at 512x512 (informative).
+//   the native PNG in the out folder, and prints the page's speed at 512x512 (informative);
+//   there, converging without input, the canvas still changes and the page presents at
+//   most ~4 times a second.
 // Prints 'ok - NAME' or 'not ok - NAME: why' per check, then 'N passed, M failed'; exits 0
 // only if all passed.
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
