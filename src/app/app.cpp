@@ -25,6 +25,7 @@ constexpr double kRateWindowMs = 3000.0;
 App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make_unique<Renderer>()) {
   settings_.sample_limit = options_.sample_limit;
   settings_.coarse = options_.coarse;
+  settings_.accel = options_.accel;
   settings_.band_rows = FramePacer::kFirstBandRows;
   renderer_->set_settings(settings_);
   scan_scenes();

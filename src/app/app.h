@@ -39,6 +39,7 @@ struct AppOptions {
   std::optional<float> exposure;                        // fixed; unset = auto
   float target_relmse = 0.0f;                            // stop once the estimate is at most this; 0 = none
   bool coarse = true;                                    // the coarse first image after a restart (render/coarse.h)
+  Accel accel = Accel::Auto;                             // the traversal (accel/accel_choice.h; the URL's accel=)
   std::string gl_renderer;                               // shown in the panel and the stats
   // Hands a finished file to the platform (the page downloads it); unset: no save buttons.
   std::function<void(const std::string& name, const std::vector<uint8_t>& bytes, const char* mime)> save_file;

@@ -82,6 +82,7 @@ AppOptions page_options(int argc, char** argv) {
     }
     if (key == "--bounces") o.bounces = std::atoi(value.c_str());
     if (key == "--coarse") o.coarse = value != "0";
+    if (key == "--accel") accel_from_name(value.c_str(), &o.accel);  // auto, bvh or flat; else auto stays
     if (key == "--target") o.target_relmse = std::max(0.0f, std::strtof(value.c_str(), nullptr));
     ToneMap tm;
     if (key == "--tonemap" && tonemap_from_name(value.c_str(), &tm)) o.tonemap = tm;
