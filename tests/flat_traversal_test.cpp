@@ -11,6 +11,8 @@
 
 #include "gl_context.h"
 #include "glsl_harness.h"
+#include "render/renderer.h"
+#include "core/file_io.h"
 #include "scene/xml_loader.h"
 #include "test_paths.h"
 
@@ -39,12 +41,26 @@ AccelRun run_accel(const Scene& scene, Accel accel, bool compute) {
   return {r.read_radiance(), r.counters(), r.using_flat()};
 }
 
+// scene2 with `extra` small diffuse spheres inside the room (more primitives than auto
+// makes flat). Not thousands: llvmpipe ends a shader invocation's loops after 65,535
+// iterations in all (gallivm's loop limiter), and a flat loop over 20,000 triangles
+// reaches that within one sample (a forced flat on a large scene renders wrong there).
+Scene room(int extra) {
+  const std::string path = repo_path("scenes/reference/scene2.xml");
+  std::string xml = *read_file(path), spheres;
+  for (int i = 0; i < extra; ++i)
+    spheres += "<Sphere center=\"" + std::to_string(-170 + (i % 10) * 25) + " " + std::to_string(20 + (i / 10) % 5 * 20) + " " +
+               std::to_string(-80 + (i / 50) * 40) + "\" radius=\"4\"><Diffuse/></Sphere>";
+  xml.replace(xml.find("</Objects>"), 0, spheres);
+  return load_scene_text(xml, path);
+}
+
 }  // namespace
 
 TEST_CASE("flat traversal: the same image and ray count as the BVH's", "[gpu][accel]") {
   // Planes (unbounded), boxes and spheres, meshes and instances, motion blur (node_mover),
   // glTF alpha MASK and BLEND (hit cuts: hit_present decides during the traversal), and a
-  // scene of many primitives (the flat loop forced where auto picks the BVH).
+  // room of 160 primitives (the flat loop forced where auto picks the BVH).
   struct Case {
     const char* name;
     bool compute;
@@ -52,7 +68,7 @@ TEST_CASE("flat traversal: the same image and ray count as the BVH's", "[gpu][ac
   const Case cases[] = {{"scenes/reference/scene0.xml", false},   {"scenes/reference/scene2.xml", false},
                         {"scenes/reference/scene2.xml", true},    {"scenes/cornell-box.xml", false},
                         {"scenes/mesh-cube.xml", true},           {"scenes/seed/06-logo.xml", false},
-                        {"scenes/gltf-instances.xml", false},     {"scenes/analytic/closed-room.xml", false},
+                        {"room", false},                          {"scenes/analytic/closed-room.xml", false},
                         {"alpha", false}};
   for (const Case& c : cases) {
     const std::string name = c.name;
@@ -61,7 +77,7 @@ TEST_CASE("flat traversal: the same image and ray count as the BVH's", "[gpu][ac
                                           "<Mesh src=\"../assets/gltf/test-blend.gltf\" position=\"0.3 0.2 -0.5\"/><Sphere center=\"0 0 -2\" radius=\"1\">"
                                           "<Emit><Absorb intensity=\"2\" color=\"1 1 1\"/></Emit></Sphere></Objects></SceneLevel>",
                                           repo_path("scenes/alpha-test.xml"))
-                        : load_scene_file(repo_path(name));
+                        : name == "room" ? room(150) : load_scene_file(repo_path(name));
     const AccelRun bvh = run_accel(scene, Accel::Bvh, c.compute);
     const AccelRun flat = run_accel(scene, Accel::Flat, c.compute);
     REQUIRE_FALSE(bvh.flat);
@@ -117,6 +133,6 @@ TEST_CASE("flat traversal: the program has no node record, node count nor stack"
     GlslKernel k("vec4 kernel(vec4 x, int i) { return vec4(scene_intersect(Ray(x.xyz, vec3(0.0, 0.0, 1.0))).t); }", f);
     CHECK((k.program().loc("u_num_nodes") == -1) == flat);
     CHECK((k.program().loc("u_num_unbounded") == -1) == flat);
-    CHECK(k.program().loc("u_num_prims") != -1);
+    if (flat) CHECK(k.program().loc("u_num_prims") != -1);
   }
 }

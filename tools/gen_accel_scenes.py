@@ -22,7 +22,7 @@ def main():
     os.makedirs(out, exist_ok=True)
     base = open(os.path.join(REPO, "scenes/reference/scene2.xml")).read()
     # The base's primitives: every shape element, the <Light> (a sphere) included.
-    have = len(re.findall(r"<(Box|Sphere|Light)\b", base))
+    have = len(re.findall(r"<(Box|Sphere|Light)\b", re.sub(r"<!--.*?-->", "", base, flags=re.S)))
     for n in map(int, sys.argv[2:]):
         rng = random.Random(n)
         extra = []

@@ -14,10 +14,12 @@ inline constexpr const char* kAccelNames[] = {"auto", "bvh", "flat"};
 
 // `auto`'s rule: flat for a scene of at most this many primitives (each triangle of a mesh
 // counts, and each plane), else the BVH. Measured (docs/benchmarks.md, "Fragment-pass
-// steps (issue 17)"): bvh against flat at 256x256, 8 bounces, interleaved, on llvmpipe
-// (fragment and compute kernels) and SwiftShader (the page), on scenes of N random boxes
-// and spheres in a closed room; flat was faster up to about this N on both.
-inline constexpr long kFlatMaxPrimitives = 64;
+// steps (issue 17)"): bvh against flat, interleaved, 256x256, 8 bounces, llvmpipe's
+// fragment pass on a loaded machine, on scene2's room with small boxes and spheres added
+// (tools/gen_accel_scenes.py): flat 1.1-1.6x faster at 24 primitives, even at 64 (0.7 and
+// 1.1x), 1.7-2.3x slower at 128, 2.4-3.4x at 384; on scene2 (10) 1.4-2.7x faster. 32 stays below the break-even;
+// the lead measures the H200's fragment pass and compute kernel with --accel.
+inline constexpr long kFlatMaxPrimitives = 32;
 
 inline bool auto_flat(long primitives) { return primitives <= kFlatMaxPrimitives; }
 
