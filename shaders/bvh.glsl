@@ -5,6 +5,10 @@
 // stored in leaf order; planes, having no bounds, sit before them and every ray tests
 // them. The same loop answers nearest-hit queries and shadow queries (any hit before
 // tmax ends it), which the compiler specialises since `any_hit` is constant at each call.
+// HAS_FLAT (a small scene: accel/accel_choice.h): no traversal at all, every primitive in
+// one loop; no node is read and there is no stack.
+uniform int u_num_prims;      // every primitive record
+#ifndef HAS_FLAT
 uniform int u_num_unbounded;  // prims [0, n) are outside the hierarchy
 uniform int u_num_nodes;      // 0: no bounded primitive
 
@@ -34,6 +38,7 @@ vec3 bvh_node_origin(NodeRec n, vec3 o) { return n.count >= 32 ? o - prim_veloci
 int bvh_entry(NodeRec n) { return n.count == 0 ? n.first : -1 - (n.first * 16 + n.count - 1); }
 #define bvh_node_origin(n, o) (o)
 #endif
+#endif  // !HAS_FLAT
 
 void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
   PrimRec p = load_prim(i);
@@ -59,6 +64,21 @@ void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
   if (h.t < before) h.prim = i;
 }
 
+#ifdef HAS_FLAT
+// Every primitive, in leaf order: the nearest hit is the BVH's but for exact ties of t
+// (the first tested wins, and the orders differ); a shadow query ends at its first hit.
+Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
+  ++g_rays;
+  Hit h = no_hit();
+  h.t = tmax;
+  RayPre pre = prepare_ray(r);
+  for (int i = 0; i < u_num_prims; ++i) {
+    bvh_prim(i, r, pre, skip, h);
+    if (any_hit && h.id >= 0) break;
+  }
+  return h;
+}
+#else
 const int BVH_STACK_SIZE = 48;  // = kBvhStackSize: the builder bounds the depth by it
 
 #ifdef PT_COMPUTE
@@ -120,6 +140,7 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
   }
   return h;
 }
+#endif  // HAS_FLAT
 
 Hit scene_intersect(Ray r) { return trace_scene(r, T_INF, false, -1); }
 

@@ -86,6 +86,7 @@ void GlslKernel::bind_scene(const PackedScene& p) {
   add("u_vertex_data", p.vertices);
   program_.use();
   program_.set("u_num_lights", p.lights.count());
+  program_.set("u_num_prims", p.prims.count());
   program_.set("u_num_unbounded", p.unbounded);
   program_.set("u_num_nodes", p.nodes.count());
 }

@@ -196,9 +196,14 @@ TEST_CASE("motion: every kind's GLSL at time t hits what its CPU twin moved to t
   test_gl();
   std::mt19937 rng(23);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  for (int kind = 0; kind < kNumShapeKinds; ++kind) {
-    INFO(kShapeKinds[kind].xml);
+  // Each kind through the BVH (its nodes moved by node_mover) and through the flat loop
+  // (accel_choice.h: a one-shape scene would otherwise be flat only).
+  for (int run = 0; run < 2 * kNumShapeKinds; ++run) {
+    const int kind = run / 2;
+    INFO(kShapeKinds[kind].xml << (run % 2 ? ", flat" : ", bvh"));
     const Scene s = load(example_xml(kind, std::string("velocity=\"") + kVelocity + "\""));
+    Features f = Features::of(s);
+    f.flat = run % 2 == 1;
     const PackedScene packed = pack_scene(s);
     REQUIRE(packed.motion_bound == 1.0f);
     // Rays towards the shape where it is at a random time t in [0, 1]; x.w carries t.
@@ -223,7 +228,7 @@ TEST_CASE("motion: every kind's GLSL at time t hits what its CPU twin moved to t
         "  g_time = x.w;\n"
         "  Hit h = scene_intersect(Ray(x.xyz, d));\n"
         "  return vec4(float(h.id), h.t, h.id >= 0 ? dot(h.p - x.xyz, d) : 0.0, 0.0);\n}\n",
-        Features::of(s));
+        f);
     k.bind_scene(packed);
     const Texture dir_tex(4096, 1, GL_RGBA32F, &dirs[0].x);
     k.bind("u_dirs", dir_tex);

@@ -77,9 +77,15 @@ bool within(glm::vec3 p, const ShapeBounds& b, float eps) {
 
 TEST_CASE("every shape kind's CPU twin agrees with its GLSL on random and grazing rays", "[gpu][shapes]") {
   test_gl();
-  for (int kind = 0; kind < kNumShapeKinds; ++kind) {
-    INFO(kShapeKinds[kind].xml);
+  // Each kind through the BVH and through the flat loop (accel_choice.h: a one-shape scene
+  // would otherwise be flat only, and the BVH's boxes are what grazing rays test).
+  for (int run = 0; run < 2 * kNumShapeKinds; ++run) {
+    const int kind = run / 2;
+    Features f;
+    INFO(kShapeKinds[kind].xml << (run % 2 ? ", flat" : ", bvh"));
     const Scene s = example_scene(kind);
+    f = Features::of(s);
+    f.flat = run % 2 == 1;
     const std::vector<Ray> rays = rays_for(s, 17u + uint32_t(kind));
     REQUIRE(rays.size() > 1024 + 200);  // every example is hit by enough rays to graze it
     GlslKernel k(
@@ -88,7 +94,7 @@ TEST_CASE("every shape kind's CPU twin agrees with its GLSL on random and grazin
         "  vec3 d = texelFetch(u_dirs, ivec2(i % 4096, i / 4096), 0).xyz;\n"
         "  Hit h = scene_intersect(Ray(x.xyz, d));\n"
         "  return vec4(float(h.id), h.t, 0.0, 0.0);\n}\n",
-        Features::of(s));
+        f);
     k.bind_scene(pack_scene(s));
     std::vector<glm::vec4> origins, dirs(size_t(4096) * ((rays.size() + 4095) / 4096), glm::vec4(0.0f));
     for (size_t i = 0; i < rays.size(); ++i) origins.emplace_back(rays[i].o, 0.0f), dirs[i] = glm::vec4(rays[i].d, 0.0f);

@@ -31,6 +31,7 @@ App::App(AppOptions options)
     : options_(std::move(options)), renderer_(std::make_unique<Renderer>()), gate_(options_.frames_in_flight) {
   settings_.sample_limit = options_.sample_limit;
   settings_.coarse = options_.coarse;
+  settings_.accel = options_.accel;
   settings_.band_rows = FramePacer::kFirstBandRows;
   // The auxiliaries stay on with the denoiser off: they draw no random numbers (the mean is
   // the same bytes, docs/denoise.md), so the toggle changes the image shown and never

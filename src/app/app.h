@@ -43,6 +43,7 @@ struct AppOptions {
   // back, each waited for, without display, panel, estimate or auto exposure.
   bool raw = false;
   int frames_in_flight = GpuGate::kInFlight;            // test-only (?inflight=N): GpuGate's depth
+  Accel accel = Accel::Auto;                             // the traversal (accel/accel_choice.h; the URL's accel=)
   std::string gl_renderer;                               // shown in the panel and the stats
   // Hands a finished file to the platform (the page downloads it); unset: no save buttons.
   std::function<void(const std::string& name, const std::vector<uint8_t>& bytes, const char* mime)> save_file;

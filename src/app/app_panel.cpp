@@ -201,6 +201,8 @@ void App::draw_panel() {
   draw_error();  // after the view's controls: their place stays where the browser tests click
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextUnformatted(options_.gl_renderer.c_str());
+  // Last, so that no control moves: which traversal the program has (the URL's accel=).
+  ImGui::Text("traversal: %s (accel=%s)", renderer_->using_flat() ? "flat, no BVH" : "BVH", accel_name(settings_.accel));
   ImGui::PopStyleColor();
   ImGui::PopItemWidth();
   ImGui::PopTextWrapPos();

@@ -177,6 +177,8 @@ std::string App::stats_json() const {
   j += ",\"bandColumns\":" + std::to_string(settings_.band_columns);
   j += ",\"width\":" + std::to_string(renderer_->width());
   j += ",\"height\":" + std::to_string(renderer_->height());
+  // The traversal the program has (flat: no BVH) and the setting that chose it (accel=).
+  j += std::string(",\"accel\":\"") + (renderer_->using_flat() ? "flat" : "bvh") + "\",\"accelSetting\":\"" + accel_name(settings_.accel) + "\"";
   j += std::string(",\"accumFormat\":") + (renderer_->accum_format() == GL_RGBA32F ? "\"rgba32f\"" : "\"rgba16f\"");
   j += ",\"mean\":[" + json_number(sum[0] / n) + "," + json_number(sum[1] / n) + "," + json_number(sum[2] / n) + "]";
   j += ",\"scene\":" + json_string(scene_.path);
@@ -243,6 +245,7 @@ std::string App::frame_fields() const {
 std::string App::load_status_json() const {
   return "{\"samples\":" + std::to_string(renderer_->samples()) + ",\"paths\":" + json_number(renderer_->paths()) +
          ",\"compileMs\":" + json_number(renderer_->compile_ms()) + ",\"scene\":" + json_string(scene_.path) +
+         ",\"accel\":" + (renderer_->using_flat() ? "\"flat\"" : "\"bvh\"") +
          ",\"error\":" + (error_ ? json_string(*error_) : std::string("null")) + ",\"loads\":" + std::to_string(loads_) + "," +
          load_fields() + "," + error_fields() + "," + frame_fields() + "}";
 }

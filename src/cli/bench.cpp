@@ -47,6 +47,7 @@ int run_bench(const Options& o) {
   r.set_settings(settings);
   pipe->attach(r);
   pipe->finish();
+  std::printf("%s, %s kernel\n", accel_line(r, scene).c_str(), r.using_compute() ? "compute" : "fragment");
   std::printf("shader: %zu bytes, compiled and linked in %.1f ms\n", r.integrator_source().text.size(), r.compile_ms());
   r.warm_up();  // outside the clock: the driver's first-use work
 

@@ -112,6 +112,7 @@ int run_render(const Options& o) {
   const Renderer::BvhStats& bs = r.bvh_stats();
   std::printf("BVH: %d primitives, %d nodes, depth %d, built in %.0f ms; packed and uploaded in %.0f ms in all\n", bs.primitives,
               bs.nodes, bs.depth, bs.build_ms, set_ms);
+  std::printf("%s\n", accel_line(r, scene).c_str());
   std::printf("shader: %zu bytes, compiled and linked in %.1f ms\n", r.integrator_source().text.size(), r.compile_ms());
 
   DrawPacer pacer(40.0);

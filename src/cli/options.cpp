@@ -32,6 +32,8 @@ const char* const kUsage =
     "  --env FILE.hdr    an equirectangular HDR map replacing the scene's environment\n"
     "  --kernel K        compute (default where the context is GL ES 3.1+, else fragment) or fragment\n"
     "                    (the WebGL 2 pass the page runs); same estimate, see docs/benchmarks.md\n"
+    "  --accel A         auto (default: flat for a scene of few primitives, else bvh; render and bench\n"
+    "                    print the rule), bvh, or flat (every ray tests every primitive); same estimate\n"
     "  --adaptive on|off per-tile sample counts from the variance (default off; docs/benchmarks.md,\n"
     "                    \"adaptive sampling\"); each pixel stays the mean of its own samples\n"
     "render: --spp N (default 64), or until --seconds S if that comes first (references);\n"
@@ -112,6 +114,9 @@ Options parse_options(int argc, char** argv, bool bench) {
       const std::string v = next();
       if (v != "compute" && v != "fragment") usage_error("--kernel takes compute or fragment");
       o.settings.compute = v == "compute";
+    } else if (a == "--accel") {
+      const char* v = next();
+      if (!accel_from_name(v, &o.settings.accel)) usage_error("--accel takes auto, bvh or flat");
     } else if (a == "--adaptive") {
       const std::string v = next();
       if (v != "on" && v != "off") usage_error("--adaptive takes on or off");
@@ -175,6 +180,17 @@ RenderSettings settings_for(const Options& o, const Scene& scene) {
   const UserSet user{given("--bounces"), given("--mode"), given("--tonemap"), given("--exposure"),
                      given("--spp") || scene_unlimited};
   return with_scene_render(s, scene.render, user);
+}
+
+std::string accel_line(const Renderer& r, const Scene& scene) {
+  const Accel a = r.settings().accel;
+  const long n = scene_primitives(scene);
+  char why[128];
+  if (a == Accel::Auto)
+    std::snprintf(why, sizeof why, "auto: %ld primitives, flat up to %ld", n, kFlatMaxPrimitives);
+  else
+    std::snprintf(why, sizeof why, "--accel %s; %ld primitives", accel_name(a), n);
+  return std::string("acceleration: ") + (r.using_flat() ? "flat" : "bvh") + " (" + why + ")";
 }
 
 std::unique_ptr<ScenePipeline> read_scene(const Options& o) {

@@ -43,6 +43,9 @@ std::unique_ptr<ScenePipeline> read_scene(const Options& o);
 // The settings to render `scene` with: the options, and the scene's <Render> for what no
 // flag set (sample_limit: --spp, else the scene's samples when > 0, else the default).
 RenderSettings settings_for(const Options& o, const Scene& scene);
+// The header line saying which acceleration the program traverses and why (--accel, or
+// auto's rule for the scene's primitive count).
+std::string accel_line(const Renderer& r, const Scene& scene);
 
 int run_render(const Options& o);
 int run_watch(const Options& o);

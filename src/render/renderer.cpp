@@ -58,6 +58,7 @@ Features Renderer::with_settings(Features f, RenderMode mode) const {
   f.compute = using_compute();
   f.aux = settings_.aux;
   f.adaptive = settings_.adaptive;
+  if (settings_.accel != Accel::Auto) f.flat = settings_.accel == Accel::Flat;  // else the scene's rule (Features::of)
   return f;
 }
 
@@ -144,7 +145,8 @@ void Renderer::set_settings(const RenderSettings& s) {
   a.denoise = b.denoise;
   a.coarse = b.coarse;  // what the display shows first, not the full-resolution estimate
   if (!(a == b)) restart();
-  const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute || s.aux != settings_.aux || s.adaptive != settings_.adaptive;
+  const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute || s.aux != settings_.aux || s.adaptive != settings_.adaptive ||
+                        s.accel != settings_.accel;
   settings_ = s;
   accum_.set_aux(s.aux);
   accum_.set_adaptive(s.adaptive);

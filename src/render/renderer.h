@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/accel_choice.h"
 #include "core/render_mode.h"
 #include "core/tonemap.h"
 #include "gpu/gl_objects.h"
@@ -39,6 +40,7 @@ struct RenderSettings {
   bool aux = false;      // the camera pass also writes the denoiser's first-hit auxiliaries
   float denoise = 0.0f;  // with aux: the denoised image's blend weight in display() (0: raw)
   bool adaptive = false; // per-tile sample counts from the variance (render/adaptive.h); a change restarts
+  Accel accel = Accel::Auto;  // BVH or a flat loop (accel/accel_choice.h); auto: by the primitive count
   // The coarse first image (render/coarse.h): after each restart, sweeps at 1/8, 1/4 and
   // 1/2 of each axis into targets of their own, shown until the first full-resolution
   // sweep is complete. The page's; off for the command line (its output stays the same).
@@ -142,6 +144,7 @@ class Renderer {
   // fragment pass. Same code, same estimate (tests/compute_kernel_test.cpp).
   bool compute_supported() const { return compute_supported_; }
   bool using_compute() const { return settings_.compute && compute_supported_; }
+  bool using_flat() const { return with_settings(features_, settings_.mode).flat; }  // the program has no BVH traversal
   const ShaderSource& integrator_source() const { return *source_; }
   double compile_ms() const { return integrator_ ? integrator_->compile_ms() : 0.0; }
   size_t programs_compiled() const { return programs_.size(); }

@@ -118,6 +118,7 @@ void SceneTextures::bind(Program& p, RenderMode mode) const {
   p.set("u_node_data", int(kNodeUnit));
   p.set("u_prim_data", int(kPrimUnit));
   p.set("u_vertex_data", int(kVertexUnit));
+  p.set("u_num_prims", num_prims_);
   p.set("u_num_unbounded", num_unbounded_);
   p.set("u_num_nodes", num_nodes_);
   p.set("u_num_lights", num_lights_);

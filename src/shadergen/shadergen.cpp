@@ -30,7 +30,18 @@ Features Features::of(const Scene& scene) {
   for (const Material& m : scene.materials) f.material_features |= pt::material_features(m.params);
   for (int i : sampled_light_shapes(scene)) f.lights |= 1u << int(scene.shapes[size_t(i)].kind());
   for (const PunctualLight& l : scene.punctual) f.punctual |= 1u << int(l.kind());
+  f.flat = auto_flat(scene_primitives(scene));
   return f;
+}
+
+long scene_primitives(const Scene& scene) {
+  long n = 0;
+  for (const Shape& s : scene.shapes) {
+    const BvhRole role = info(s.kind()).bvh;
+    if (role == BvhRole::Instanced) n += long(scene.meshes[size_t(s.as<Mesh>()->mesh)]->triangles.size());
+    else if (role != BvhRole::None) ++n;
+  }
+  return n;
 }
 
 namespace {
@@ -182,9 +193,11 @@ std::string generate_prelude(const Features& features) {
   if (f.motion) g += "#define HAS_MOTION 1\n";
   if (f.aux) g += "#define PT_AUX 1\n";
   if (f.adaptive) g += "#define PT_ADAPTIVE 1\n";
+  if (f.flat) g += "#define HAS_FLAT 1\n";
   g += "#include \"common.glsl\"\n";
   g += glsl_record(shape_layout()) + glsl_record(material_glsl()) + glsl_record(light_layout());
-  g += glsl_record(node_layout()) + glsl_record(prim_layout());
+  if (!f.flat) g += glsl_record(node_layout());  // flat: no traversal reads a node (bvh.glsl)
+  g += glsl_record(prim_layout());
   for (int i = 0; i < kNumShapeKinds; ++i)
     if (f.has(ShapeKind(i)) && kShapeKinds[i].bvh == BvhRole::Instanced) {  // per-vertex attributes
       g += glsl_record(vertex_layout());

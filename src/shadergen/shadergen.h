@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/accel_choice.h"
 #include "core/render_mode.h"
 #include "core/shader_source.h"
 #include "core/tonemap.h"
@@ -32,6 +33,10 @@ struct Features {
   // Adaptive sampling: each tile's count and samples per pass from a texture
   // (camera_pass.glsl, render/adaptive.h); a renderer setting too.
   bool adaptive = false;
+  // No acceleration structure: every ray tests every primitive in a plain loop, and the
+  // program has no traversal code and no stack (accel/accel_choice.h). Features::of sets
+  // it by the primitive count (auto); the renderer's Accel setting may override it.
+  bool flat = false;
   bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
   bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
   bool has_light(ShapeKind k) const { return lights >> int(k) & 1u; }
@@ -48,15 +53,20 @@ struct Features {
     std::string k;
     auto put = [&k](uint32_t v) { k.append(reinterpret_cast<const char*>(&v), sizeof v); };
     put(shapes), put(materials), put(lights), put(punctual), put(material_features);
-    put(uint32_t(env_map) | uint32_t(motion) << 1 | uint32_t(compute) << 2 | uint32_t(aux) << 3 | uint32_t(adaptive) << 4 | uint32_t(mode) << 8);
+    put(uint32_t(env_map) | uint32_t(motion) << 1 | uint32_t(compute) << 2 | uint32_t(aux) << 3 | uint32_t(adaptive) << 4 | uint32_t(flat) << 5 |
+        uint32_t(mode) << 8);
     return k;
   }
   static Features of(const Scene& scene);
 };
+// The primitives a flat loop would test: one per analytic shape and lone triangle, one per
+// mesh triangle (the rule of accel/accel_choice.h counts these).
+long scene_primitives(const Scene& scene);
 // A field added to Features must go into key() too (else two programs share a cache slot).
-// Five words, the mode and five flags (with 3 bytes of padding): a new word changes the
-// size; a sixth flag would fit the padding, so a new flag must be added to key() by hand.
-static_assert(sizeof(Features) == 5 * sizeof(uint32_t) + sizeof(RenderMode) + 8,
+// Five words, the mode and six flags (env_map .. flat, with 2 bytes of padding): a new word
+// changes the size; a seventh or eighth flag would fit the padding, so a new flag must be
+// added to key() by hand.
+static_assert(sizeof(Features) == 5 * sizeof(uint32_t) + sizeof(RenderMode) + 6 + 2,
               "a new field of Features: add it to key() and to this count");
 static_assert(kNumShapeKinds <= 32 && kNumLightKinds <= 32 && kNumMaterialKinds <= 32 && kNumMaterialFeatures <= 32,
               "Features: one bit per kind in 32");

@@ -54,6 +54,7 @@ function shim() {
       bench.info.firstImageMs = performance.now();  // since navigation start
       bench.info.compileMs = s.compileMs;
       bench.info.lastLoadMs = s.lastLoad && s.lastLoad.ms;
+      bench.info.accel = s.accel;  // the traversal the page chose (flat or bvh; the URL's accel=)
       try { const st = window.ptStats(); bench.info.renderer = st.renderer; bench.info.width = st.width; bench.info.height = st.height; } catch (e) {}
       bench.state = "rendering";
       clearInterval(poll);
