@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh, kernels, variants or wave2}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2 or accel}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -113,6 +113,24 @@ case "$part" in
     for flags in "--sampler independent" "--no-nee" "--bounces 1" "--kernel fragment"; do
       echo "== $(basename "$last") million $flags"
       $last render scenes/bench/million.xml --size $S --spp 100000 --seconds 5 $flags --out /tmp/m.png | grep -E "rendered"
+    done
+    ;;
+  accel)
+    # The traversal choice (issue 17, docs/benchmarks.md "Fragment-pass steps"): each scene
+    # at 1080p for ACCEL_SECONDS (5) in both kernels with the BVH and flat, then 16 spp of
+    # each kept as PFM (byte-compared with cmp: the same estimate).
+    for s in ${ACCEL_SCENES:-scenes/reference/scene2.xml scenes/cornell-box.xml scenes/reference/scene0.xml scenes/bench/million.xml}; do
+      for k in fragment compute; do
+        for a in bvh flat; do
+          [[ $a == flat && $s == *million* ]] && continue  # 1.3 M triangles in one loop: not a choice
+          echo "== $(basename "$s" .xml) $k $a"
+          $B render "$s" --size $S --spp 100000 --seconds "${ACCEL_SECONDS:-5}" --kernel $k --accel $a --out /tmp/w.png | grep -E "acceleration|rendered|non-finite"
+          $B render "$s" --size 640x360 --spp 16 --spp-per-pass 4 --kernel $k --accel $a --out "$w/$(basename "$s" .xml)-$k-$a.pfm" >/dev/null
+        done
+        if [[ -f "$w/$(basename "$s" .xml)-$k-flat.pfm" ]]; then
+          cmp -s "$w/$(basename "$s" .xml)-$k-bvh.pfm" "$w/$(basename "$s" .xml)-$k-flat.pfm" && echo "16 spp: bvh and flat byte-identical" || echo "16 spp: bvh and flat DIFFER"
+        fi
+      done
     done
     ;;
   wave2)

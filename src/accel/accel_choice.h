@@ -14,12 +14,15 @@ inline constexpr const char* kAccelNames[] = {"auto", "bvh", "flat"};
 
 // `auto`'s rule: flat for a scene of at most this many primitives (each triangle of a mesh
 // counts, and each plane), else the BVH. Measured (docs/benchmarks.md, "Fragment-pass
-// steps (issue 17)"): bvh against flat, interleaved, 256x256, 8 bounces, llvmpipe's
-// fragment pass on a loaded machine, on scene2's room with small boxes and spheres added
-// (tools/gen_accel_scenes.py): flat 1.1-1.6x faster at 24 primitives, even at 64 (0.7 and
-// 1.1x), 1.7-2.3x slower at 128, 2.4-3.4x at 384; on scene2 (10) 1.4-2.7x faster. 32 stays below the break-even;
-// the lead measures the H200's fragment pass and compute kernel with --accel.
-inline constexpr long kFlatMaxPrimitives = 32;
+// steps (issue 17)"), bvh against flat: on the H200 (1080p, 8 bounces, 5 s each) flat was
+// faster on scene2 (10 primitives: fragment 1.51x, compute 1.12x) and slower on scene0
+// (13: 0.83x, 0.85x) and the Cornell box (32 triangles: 0.79x, 0.64x); in SwiftShader's
+// page (loaded machine) scene2 1.0-1.8x, scene0 0.75-0.89x; on llvmpipe flat won up to
+// ~24-64 primitives of scene2's room. A count cannot tell a room whose every wall each ray
+// overlaps (scene2: the BVH culls little) from one where it culls well (scene0), so 12 is
+// fitted to these three scenes; a rule from the BVH's own SAH cost against the flat
+// loop's is the next step.
+inline constexpr long kFlatMaxPrimitives = 12;
 
 inline bool auto_flat(long primitives) { return primitives <= kFlatMaxPrimitives; }
 
