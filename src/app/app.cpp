@@ -9,7 +9,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 
 #include "core/image.h"
@@ -21,14 +20,9 @@ namespace {
 // The samples-per-second shown are measured over this window.
 constexpr double kRateWindowMs = 3000.0;
 
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
-App::App(AppOptions options)
-    : options_(std::move(options)), renderer_(std::make_unique<Renderer>()), gate_(options_.frames_in_flight) {
+App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make_unique<Renderer>()) {
   settings_.sample_limit = options_.sample_limit;
   settings_.coarse = options_.coarse;
   settings_.accel = options_.accel;
@@ -79,12 +73,9 @@ void App::set_sample_limit(int n) { settings_.sample_limit = std::max(0, n); }
 void App::frame(int fb_w, int fb_h, double now_ms) {
   const double dt_ms = last_frame_ms_ < 0 ? 0.0 : now_ms - last_frame_ms_;
   last_frame_ms_ = now_ms;
+
   fb_w_ = fb_w;
   fb_h_ = fb_h;
-  ++frame_stats_.frames;
-  if (options_.raw) return raw_frame(fb_w, fb_h);
-
-  const auto t0 = std::chrono::steady_clock::now();
   poll_loading();
   handle_input(std::min(dt_ms, 100.0) * 1e-3);
   handle_click();
@@ -93,69 +84,10 @@ void App::frame(int fb_w, int fb_h, double now_ms) {
   draw_panel();
   draw_selection_panel(fb_w);
   renderer_->set_settings(render_settings());  // restarts only when the estimate changes
-  const auto t1 = std::chrono::steady_clock::now();
-  frame_stats_.panel_ms += ms_since(t0);
   render_passes(now_ms, dt_ms);
-  const auto t2 = std::chrono::steady_clock::now();
-  frame_stats_.draws_ms += ms_since(t1);
   update_error(now_ms);
   update_auto_exposure();
-  frame_stats_.after_ms += ms_since(t2);
-}
-
-// The raw pass: the renderer alone, as fast as it draws. Whole-image draws, one a frame,
-// each waited for with a one-pixel read-back (WebGL's finish does not wait for
-// SwiftShader: tools/peers/README.md), so that the paths counted are paths finished.
-void App::raw_frame(int fb_w, int fb_h) {
-  poll_loading();
-  const glm::ivec2 size = options_.width > 0 ? glm::ivec2(options_.width, options_.height) : glm::ivec2(fb_w, fb_h);
-  renderer_->resize(size.x, size.y);
-  RenderSettings s = settings_;
-  s.band_rows = s.band_columns = 0;
-  s.coarse = false;
-  renderer_->set_settings(s);
-  if (preparing() || loading_ || renderer_->converged()) return;
-  renderer_->step();
-  float px[4];
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer_->accumulator().current_fbo());
-  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, px);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  ++frame_stats_.draw_frames;
-}
-
-uint64_t App::image_key() const {
-  uint64_t h = 1469598103934665603ull;
-  const auto mix = [&h](uint64_t v) { h = (h ^ v) * 1099511628211ull; };
-  const auto bits = [](float f) {
-    uint32_t u;
-    std::memcpy(&u, &f, sizeof u);
-    return uint64_t(u);
-  };
-  const RenderSettings& s = renderer_->settings();
-  mix(uint64_t(renderer_->accumulator().epoch()));
-  mix(uint64_t(renderer_->samples()));
-  mix(uint64_t(renderer_->shown_divisor()));
-  mix(uint64_t(renderer_->ladder().completed()));
-  mix(uint64_t(renderer_->width()) << 32 | uint64_t(renderer_->height()));
-  mix(uint64_t(s.tonemap));
-  mix(bits(s.exposure));
-  mix(bits(s.denoise));
-  mix(uint64_t(s.aux));
-  return h;
-}
-
-bool App::present_due(double now_ms, uint64_t ui_hash, bool input) {
-  if (options_.raw) return false;
-  PresentState s;
-  s.fb_w = fb_w_;
-  s.fb_h = fb_h_;
-  s.image = image_key();
-  s.ui = ui_hash;
-  s.input = input;
-  s.force = force_present_;
-  s.drew = drew_;
-  force_present_ = false;
-  return presenter_.due(s, now_ms);
+  present(fb_w, fb_h);
 }
 
 void App::update_auto_exposure() {
@@ -169,26 +101,8 @@ void App::update_auto_exposure() {
 
 void App::render_passes(double now_ms, double dt_ms) {
   if (renderer_->samples() == 0 && !renderer_->mid_sweep()) restart_ms_ = now_ms;
-  drew_ = false;
-  // No draws while the GPU still runs two earlier frames' (GpuGate), unless the image
-  // restarted: its first draw is what an edit waits for.
-  const int epoch = renderer_->accumulator().epoch();
-  if (epoch == drawn_epoch_ && !renderer_->converged() && !gate_.ready()) {
-    gate_waited_ = true;
-    return;  // the rate's history stays: waiting is part of drawing
-  }
-  // The draws of this frame, sized by the interval between frames (render/pacing.h): since
-  // the last frame that drew when the frames between waited for the GPU.
-  const double draw_dt = gate_waited_ && last_draw_ms_ >= 0 ? now_ms - last_draw_ms_ : dt_ms;
-  gate_waited_ = false;
-  const int done = pacer_.frame(*renderer_, settings_, draw_dt, now_ms, preparing(), total_samples_);
-  if (done > 0) {
-    gate_.submitted();
-    last_draw_ms_ = now_ms;
-    drawn_epoch_ = epoch;
-    drew_ = true;
-    ++frame_stats_.draw_frames;
-  }
+  // The draws of this frame, sized by the interval between frames (render/pacing.h).
+  const int done = pacer_.frame(*renderer_, settings_, dt_ms, now_ms, preparing(), total_samples_);
   if (!renderer_->converged()) done_ms_ = -1.0;  // a raised limit resumes the clock
   else if (done_ms_ < 0) done_ms_ = now_ms;
   if (done == 0) {
@@ -204,10 +118,7 @@ void App::render_passes(double now_ms, double dt_ms) {
   if (now_ms - first.ms >= 1000.0 || finished) samples_per_second_ = (total_samples_ - first.samples) * 1000.0 / (now_ms - first.ms);
 }
 
-void App::present() {
-  const auto t0 = std::chrono::steady_clock::now();
-  ++frame_stats_.presents;
-  const int fb_w = fb_w_, fb_h = fb_h_;
+void App::present(int fb_w, int fb_h) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, fb_w, fb_h);
   glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
@@ -216,7 +127,6 @@ void App::present() {
   if (w == fb_w && h == fb_h) {
     image_rect_ = glm::vec4(0.0f, 0.0f, float(w), float(h));
     renderer_->display(0, 0);
-    frame_stats_.present_ms += ms_since(t0);
     return;
   }
   // A fixed render size: tone-map into an 8-bit target, then scale it to fit the canvas.
@@ -237,7 +147,6 @@ void App::present() {
   glBlitFramebuffer(0, 0, w, h, dx, dy, dx + dw, dy + dh, GL_COLOR_BUFFER_BIT, s >= 1.0f ? up : GL_LINEAR);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, fb_w, fb_h);
-  frame_stats_.present_ms += ms_since(t0);
 }
 
 const std::vector<float>& App::radiance_snapshot() {

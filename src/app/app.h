@@ -39,10 +39,6 @@ struct AppOptions {
   std::optional<float> exposure;                        // fixed; unset = auto
   float target_relmse = 0.0f;                            // stop once the estimate is at most this; 0 = none
   bool coarse = true;                                    // the coarse first image after a restart (render/coarse.h)
-  // Test-only (?raw=1; tools/page_cost.mjs): the raw pass, whole-image draws back to
-  // back, each waited for, without display, panel, estimate or auto exposure.
-  bool raw = false;
-  int frames_in_flight = GpuGate::kInFlight;            // test-only (?inflight=N): GpuGate's depth
   Accel accel = Accel::Auto;                             // the traversal (accel/accel_choice.h; the URL's accel=)
   std::string gl_renderer;                               // shown in the panel and the stats
   // Hands a finished file to the platform (the page downloads it); unset: no save buttons.
@@ -59,22 +55,9 @@ class App {
   // float targets (the platform shows that message instead of a blank canvas).
   explicit App(AppOptions options);
 
-  // One frame for a default framebuffer of size fb_w x fb_h (device pixels). now_ms: a
-  // monotonic clock. Builds the ImGui panel and draws, presents nothing.
+  // One displayed frame into the default framebuffer of size fb_w x fb_h (device
+  // pixels). now_ms: a monotonic clock. Builds the ImGui panel, does not render ImGui.
   void frame(int fb_w, int fb_h, double now_ms);
-  // After frame(): whether this frame presents (render/pacing.h, PresentPacer), given the
-  // hash of the panel's draw lists and whether input reached the panel. When true the
-  // platform calls present() and then renders ImGui; else the canvas keeps its last image.
-  bool present_due(double now_ms, uint64_t ui_hash, bool input);
-  void present();  // the image into the default framebuffer (fitted when its size differs)
-  // The frames' costs (ptLoadStatus().frameStats; tools/page_cost.mjs): frames run,
-  // frames that drew, presents, and the CPU time of the frame's parts in ms (what the
-  // page's thread spends issuing them; the GPU's time is not in it).
-  struct FrameStats {
-    long frames = 0, draw_frames = 0, presents = 0;
-    double panel_ms = 0, draws_ms = 0, after_ms = 0, present_ms = 0, imgui_ms = 0;
-  };
-  FrameStats& frame_stats() { return frame_stats_; }
 
   // Test hooks.
   std::string stats_json() const;                        // see web/index.html: ptStats()
@@ -126,9 +109,7 @@ class App {
   void draw_panel();
   void draw_scene_controls();
   void render_passes(double now_ms, double dt_ms);
-  void raw_frame(int fb_w, int fb_h);  // AppOptions::raw
-  uint64_t image_key() const;           // PresentState::image
-  std::string frame_fields() const;     // app_stats.cpp: frame_stats_ as JSON
+  void present(int fb_w, int fb_h);
   void scan_scenes();
   // app_loading.cpp: scenes through the pipeline. edit: the shown scene again (an edit, a
   // lost context): the page's settings are kept.
@@ -163,15 +144,6 @@ class App {
   // Frame pacing: the draws per frame and their size follow the interval between frames.
   double last_frame_ms_ = -1.0;
   FramePacer pacer_;
-  // Draws wait for the GPU through fences (GpuGate): the pacer is fed the interval since
-  // the last frame that drew when the frames between waited for the gate; a restart draws
-  // at once. What is shown is presented by PresentPacer's rules.
-  GpuGate gate_;
-  double last_draw_ms_ = -1.0;
-  bool gate_waited_ = false, drew_ = false, force_present_ = false;
-  int drawn_epoch_ = -1;
-  PresentPacer presenter_;
-  FrameStats frame_stats_;
 
   // Progress: samples per second over the last few seconds of rendering (frames can be
   // slow: with a software GPU one pass may take most of a second); elapsed time since the

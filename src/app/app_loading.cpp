@@ -186,9 +186,6 @@ void App::context_restored() {
   renderer_->set_settings(settings_);
   renderer_->set_camera(camera);
   shown_ = false;
-  gate_.forget();  // the fences went with the context
-  drawn_epoch_ = -1;
-  force_present_ = true;  // the canvas was cleared
   // The kept scene is packed again (in slices), unless another is on its way (its staged
   // textures were the lost context's); should that one fail, load_failed brings the kept
   // one back.

@@ -233,21 +233,12 @@ std::string App::load_fields() const {
   return j;
 }
 
-// The frames' costs (FrameStats): cumulative, a measurement takes differences.
-std::string App::frame_fields() const {
-  const FrameStats& f = frame_stats_;
-  return "\"frameStats\":{\"frames\":" + std::to_string(f.frames) + ",\"drawFrames\":" + std::to_string(f.draw_frames) +
-         ",\"presents\":" + std::to_string(f.presents) + ",\"cpuMs\":{\"panel\":" + json_number(f.panel_ms) +
-         ",\"draws\":" + json_number(f.draws_ms) + ",\"after\":" + json_number(f.after_ms) + ",\"present\":" +
-         json_number(f.present_ms) + ",\"imgui\":" + json_number(f.imgui_ms) + "}}";
-}
-
 std::string App::load_status_json() const {
   return "{\"samples\":" + std::to_string(renderer_->samples()) + ",\"paths\":" + json_number(renderer_->paths()) +
          ",\"compileMs\":" + json_number(renderer_->compile_ms()) + ",\"scene\":" + json_string(scene_.path) +
          ",\"accel\":" + (renderer_->using_flat() ? "\"flat\"" : "\"bvh\"") +
          ",\"error\":" + (error_ ? json_string(*error_) : std::string("null")) + ",\"loads\":" + std::to_string(loads_) + "," +
-         load_fields() + "," + error_fields() + "," + frame_fields() + "}";
+         load_fields() + "," + error_fields() + "}";
 }
 
 }  // namespace pt

@@ -57,16 +57,8 @@ void frame() {
   sync_canvas_size(&w, &h);
   g_app->set_display(float(emscripten_get_device_pixel_ratio()), pt::web::touch_screen());
   pt::web::imgui_begin(w, h);
-  const double now = emscripten_get_now();
-  g_app->frame(w, h, now);
-  const uint64_t ui = pt::web::imgui_render();
-  // Most frames present nothing (App::present_due): the canvas keeps its last image.
-  if (g_app->present_due(now, ui, pt::web::imgui_input())) {
-    g_app->present();
-    const double t1 = emscripten_get_now();
-    pt::web::imgui_draw();
-    g_app->frame_stats().imgui_ms += emscripten_get_now() - t1;
-  }
+  g_app->frame(w, h, emscripten_get_now());
+  pt::web::imgui_end();
   g_prepare.drawn(t0, emscripten_get_now());
   if (g_app->preparing()) pt::web::pump_work(pt::PreparePacer::kSliceMs);
 }

@@ -82,8 +82,6 @@ AppOptions page_options(int argc, char** argv) {
     }
     if (key == "--bounces") o.bounces = std::atoi(value.c_str());
     if (key == "--coarse") o.coarse = value != "0";
-    if (key == "--raw") o.raw = value == "1";
-    if (key == "--inflight") o.frames_in_flight = std::max(1, std::atoi(value.c_str()));
     if (key == "--accel") accel_from_name(value.c_str(), &o.accel);  // auto, bvh or flat; else auto stays
     if (key == "--target") o.target_relmse = std::max(0.0f, std::strtof(value.c_str(), nullptr));
     ToneMap tm;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <cstring>
 
 #include <GLFW/glfw3.h>
 #include <emscripten/html5.h>
@@ -25,7 +24,6 @@ namespace {
 
 GLFWwindow* g_window = nullptr;
 bool g_touch_screen = false;
-bool g_input = false;  // imgui_input()
 
 // A touch that started on a window drives ImGui as the mouse (the backend's mouse is
 // overridden while it lasts): a press shorter than a frame is still seen held for one
@@ -117,13 +115,6 @@ void imgui_begin(int w, int h) {
   io.DisplaySize = ImVec2(float(w), float(h));  // GLFW's window size is not kept in sync (web.cpp)
   io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
   ImGui::NewFrame();
-  // Input this frame (the wheel and text are cleared at the frame's end, so read here).
-  static ImVec2 last_pos(0, 0);
-  g_input = io.MousePos.x != last_pos.x || io.MousePos.y != last_pos.y || io.MouseWheel != 0.0f || io.MouseWheelH != 0.0f ||
-            io.InputQueueCharacters.Size > 0 || g_touch.active;
-  last_pos = io.MousePos;
-  for (const bool down : io.MouseDown) g_input = g_input || down;
-  for (const bool down : io.KeysDown) g_input = g_input || down;
 }
 
 bool imgui_window_at(float x, float y) {
@@ -154,36 +145,9 @@ void imgui_touch(float x, float y, bool down) {
 
 bool touch_screen() { return g_touch_screen; }
 
-uint64_t imgui_render() {
+void imgui_end() {
   ImGui::Render();
-  const ImDrawData* d = ImGui::GetDrawData();
-  // FNV-1a over 32-bit words: the vertices (positions, UVs, colours) and indices say all
-  // that is drawn; the commands add textures and clips. Tens of microseconds a frame.
-  uint64_t h = 1469598103934665603ull;
-  const auto words = [&h](const void* p, size_t bytes) {
-    const auto* b = static_cast<const unsigned char*>(p);
-    for (size_t i = 0; i + 4 <= bytes; i += 4) {
-      uint32_t w;
-      std::memcpy(&w, b + i, 4);
-      h = (h ^ w) * 1099511628211ull;
-    }
-  };
-  for (int n = 0; n < d->CmdListsCount; ++n) {
-    const ImDrawList* l = d->CmdLists[n];
-    words(l->VtxBuffer.Data, size_t(l->VtxBuffer.Size) * sizeof(ImDrawVert));
-    words(l->IdxBuffer.Data, size_t(l->IdxBuffer.Size) * sizeof(ImDrawIdx));
-    for (const ImDrawCmd& c : l->CmdBuffer) {
-      words(&c.ClipRect, sizeof c.ClipRect);
-      const uint64_t tex = uint64_t(reinterpret_cast<uintptr_t>(c.TextureId));
-      words(&tex, sizeof tex);
-      words(&c.ElemCount, sizeof c.ElemCount);
-    }
-  }
-  return h;
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
-
-void imgui_draw() { ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData()); }
-
-bool imgui_input() { return g_input; }
 
 }  // namespace pt::web

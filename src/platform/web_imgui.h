@@ -2,7 +2,6 @@
 // style and font scaled by the device pixel ratio (and made for fingers on a touch screen),
 // a touch on a window as its mouse, and one frame's begin and end.
 #pragma once
-#include <cstdint>
 
 struct GLFWwindow;
 
@@ -13,13 +12,7 @@ void imgui_init(GLFWwindow* window);
 void imgui_context_restored();
 // Starts an ImGui frame for a drawing buffer of w x h device pixels.
 void imgui_begin(int w, int h);
-// Ends the frame (ImGui::Render) and returns a hash of its draw lists: an unchanged hash
-// is an unchanged panel (App::present_due).
-uint64_t imgui_render();
-void imgui_draw();   // renders the frame's draw lists into the default framebuffer
-// Whether input reached ImGui this frame: the pointer moved, a button or key is held, the
-// wheel turned, text came, or a touch drives it.
-bool imgui_input();
+void imgui_end();  // renders the frame's draw lists
 // Touch (web_touch.cpp): whether a window of the last frame covers (x, y) (device pixels),
 // and a touch on a window as the mouse's left button at (x, y).
 bool imgui_window_at(float x, float y);

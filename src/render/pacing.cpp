@@ -63,49 +63,6 @@ void DrawPacer::apply(int image_rows, RenderSettings& s) const {
   }
 }
 
-bool PresentPacer::due(const PresentState& s, double now_ms) {
-  if (s.input) input_ms_ = now_ms;
-  pending_ = pending_ || s.drew || (any_ && s.ui != last_.ui);
-  const bool now = !any_ || s.force || s.fb_w != last_.fb_w || s.fb_h != last_.fb_h || s.image != last_.image ||
-                   now_ms - input_ms_ <= kAfterInputMs;
-  if (!now && !(pending_ && now_ms - last_ms_ >= kEveryMs)) return false;
-  last_ = s;
-  any_ = true;
-  pending_ = false;
-  last_ms_ = now_ms;
-  ++presents_;
-  return true;
-}
-
-GpuGate::~GpuGate() {
-  for (GLsync& f : fences_)
-    if (f) glDeleteSync(f);
-}
-
-bool GpuGate::ready() {
-  GLsync& f = fences_[next_];
-  if (!f) return true;
-  GLint status = GL_SIGNALED;  // a failed query must not stop the draws for good
-  glGetSynciv(f, GL_SYNC_STATUS, 1, nullptr, &status);
-  if (status != GL_SIGNALED) return false;
-  glDeleteSync(f);
-  f = nullptr;
-  return true;
-}
-
-void GpuGate::submitted() {
-  GLsync& f = fences_[next_];
-  if (f) glDeleteSync(f);  // drawn past the gate (a restart): the older fence is not waited for
-  f = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-  glFlush();  // a frame that presents nothing would otherwise keep its draws in the page's queue
-  next_ = (next_ + 1) % int(fences_.size());
-}
-
-void GpuGate::forget() {
-  for (GLsync& f : fences_) f = nullptr;
-  next_ = 0;
-}
-
 // The narrowest tile of a band of kMinBandRows rows.
 int FramePacer::min_band_columns(int w, int h) const {
   const int per_sweep = (double(w) * h) / (double(kMaxDrawsPerSweep) * std::min(kMinBandRows, std::max(1, h))) + 1;

@@ -9,9 +9,6 @@
 //   displayed frames says how long the GPU took; the draw grows and shrinks with it.
 #pragma once
 
-#include <algorithm>
-#include <vector>
-
 #include "render/renderer.h"
 
 namespace pt {
@@ -60,62 +57,6 @@ class PreparePacer {
 
  private:
   double last_end_ms_ = 0.0, last_ms_ = 0.0;
-};
-
-// The page's presents (issue 17; docs/benchmarks.md "The page's per-frame cost"). A
-// present - the display pass, the panel's draw, the browser compositing the canvas - costs
-// a software GL a fixed share of every frame whatever its draw (SwiftShader, 2 cores: most
-// of the time of a frame whose draw is the smallest tile). A frame that presents nothing
-// leaves the canvas showing the last present, so the page presents at once whatever must
-// be seen at once, and the rest (the tiles of a converging sweep, the panel's figures) at
-// most every kEveryMs.
-struct PresentState {
-  int fb_w = 0, fb_h = 0;
-  // Shown at once when it changes: a restart, a finished sweep, the coarse level shown,
-  // the display's settings (the caller hashes them).
-  uint64_t image = 0;
-  uint64_t ui = 0;       // the panel's draw lists (hashed)
-  bool input = false;    // pointer, wheel, keys or text reached the panel this frame
-  bool force = false;    // the canvas lost its content (a restored context)
-  bool drew = false;     // this frame's draws added samples to the image shown
-};
-class PresentPacer {
- public:
-  // At most 4 presents a second while only the samples of a sweep and the panel's figures
-  // change; every frame while input comes and for kAfterInputMs after it (hover, a slider).
-  static constexpr double kEveryMs = 250.0;
-  static constexpr double kAfterInputMs = 500.0;
-  // Whether to present this frame; true records it as presented.
-  bool due(const PresentState& s, double now_ms);
-  int presents() const { return presents_; }
-
- private:
-  PresentState last_;
-  bool any_ = false, pending_ = false;  // presented once; a change not yet presented
-  double last_ms_ = -1e30, input_ms_ = -1e30;
-  int presents_ = 0;
-};
-
-// The GPU's progress, through fences. Without a present a frame gives the browser no
-// reason to wait for the draws it queued, so their queue could grow without bound (and an
-// edit wait behind seconds of old tiles): a frame draws only while fewer than kInFlight
-// earlier frames' draws are still running. Two keep the GPU fed while the page waits for
-// the next animation frame to see a fence signalled; the interval between drawing frames
-// is then the GPU's time for one frame's draws, what FramePacer expects.
-class GpuGate {
- public:
-  static constexpr int kInFlight = 4;
-  explicit GpuGate(int in_flight = kInFlight) : fences_(size_t(std::clamp(in_flight, 1, 64)), nullptr) {}
-  GpuGate(const GpuGate&) = delete;
-  GpuGate& operator=(const GpuGate&) = delete;
-  ~GpuGate();
-  bool ready();       // the oldest fence is signalled (or none is pending)
-  void submitted();   // after a frame's draws: fence them, flush
-  void forget();      // a lost context: its fences are gone (not deleted)
-
- private:
-  std::vector<GLsync> fences_;
-  int next_ = 0;  // the slot of the oldest fence, the next one written
 };
 
 class FramePacer {
