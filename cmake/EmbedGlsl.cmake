@@ -12,18 +12,26 @@ function(pt_embed_glsl out_var)
     file(RELATIVE_PATH key "${CMAKE_SOURCE_DIR}/src" "${f}")
     list(APPEND entries "${key}=${f}")
   endforeach()
-  # Tables computed at build time, never typed in: the glTF sheen lobe's albedo (tools/gen_sheen_lut.py).
+  # Tables computed at build time, never typed in: the glTF sheen lobe's albedo (tools/gen_sheen_lut.py),
+  # the GGX lobe's (tools/gen_ggx_ms_lut.py).
   set(sheen_lut "${CMAKE_BINARY_DIR}/generated/materials/gltf_sheen_lut.glsl")
   file(MAKE_DIRECTORY "${CMAKE_BINARY_DIR}/generated/materials")
   add_custom_command(OUTPUT "${sheen_lut}"
     COMMAND python3 "${CMAKE_SOURCE_DIR}/tools/gen_sheen_lut.py" "${sheen_lut}"
-    DEPENDS "${CMAKE_SOURCE_DIR}/tools/gen_sheen_lut.py"
+    DEPENDS "${CMAKE_SOURCE_DIR}/tools/gen_sheen_lut.py" "${CMAKE_SOURCE_DIR}/tools/lut_common.py"
     COMMENT "Tabulating the sheen albedo" VERBATIM)
   list(APPEND entries "materials/gltf_sheen_lut.glsl=${sheen_lut}")
+  # The GGX lobe's albedos for the multiple-scattering compensation (tools/gen_ggx_ms_lut.py).
+  set(ms_lut "${CMAKE_BINARY_DIR}/generated/materials/gltf_ms_lut.glsl")
+  add_custom_command(OUTPUT "${ms_lut}"
+    COMMAND python3 "${CMAKE_SOURCE_DIR}/tools/gen_ggx_ms_lut.py" "${ms_lut}"
+    DEPENDS "${CMAKE_SOURCE_DIR}/tools/gen_ggx_ms_lut.py" "${CMAKE_SOURCE_DIR}/tools/lut_common.py"
+    COMMENT "Tabulating the GGX albedo" VERBATIM)
+  list(APPEND entries "materials/gltf_ms_lut.glsl=${ms_lut}")
   set(out "${CMAKE_BINARY_DIR}/generated/embedded_glsl.cpp")
   add_custom_command(OUTPUT "${out}"
     COMMAND ${CMAKE_COMMAND} "-DOUT=${out}" "-DENTRIES=${entries}" -P "${CMAKE_SOURCE_DIR}/cmake/EmbedGlslScript.cmake"
-    DEPENDS ${skeleton} ${snippets} "${sheen_lut}" "${CMAKE_SOURCE_DIR}/cmake/EmbedGlslScript.cmake"
+    DEPENDS ${skeleton} ${snippets} "${sheen_lut}" "${ms_lut}" "${CMAKE_SOURCE_DIR}/cmake/EmbedGlslScript.cmake"
     COMMENT "Embedding GLSL sources" VERBATIM)
   set(${out_var} "${out}" PARENT_SCOPE)
 endfunction()

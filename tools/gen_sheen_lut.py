@@ -16,6 +16,8 @@ Stdlib only. Usage: gen_sheen_lut.py OUT.glsl
 import math
 import sys
 
+from lut_common import write_if_changed
+
 MU, R = 32, 16
 MU_MIN, R_MIN = 1e-3, 0.05
 N_COS, N_PHI = 48, 48  # quadrature nodes (64 and 256 agree to 1e-4)
@@ -84,14 +86,7 @@ def main():
     body = ",\n".join("  " + ", ".join("%.6f" % v for v in row) for row in rows)
     lines.append(body + ");")
     text = "\n".join(lines) + "\n"
-    try:
-        with open(out) as f:
-            if f.read() == text:
-                return
-    except OSError:
-        pass
-    with open(out, "w") as f:
-        f.write(text)
+    write_if_changed(out, text)
 
 
 if __name__ == "__main__":

@@ -13,7 +13,8 @@
   X(GltfSpecular, "GLTF_SPECULAR", nullptr) /* KHR_materials_specular: coloured F0, F90 weight */   \
   X(GltfClearcoat, "GLTF_CLEARCOAT", "materials/gltf_clearcoat.glsl") /* KHR_materials_clearcoat */ \
   X(GltfSheen, "GLTF_SHEEN", "materials/gltf_sheen.glsl")   /* KHR_materials_sheen */       \
-  X(GltfTransmission, "GLTF_TRANSMISSION", nullptr) /* KHR_materials_transmission, thin-walled */
+  X(GltfTransmission, "GLTF_TRANSMISSION", nullptr) /* KHR_materials_transmission, thin-walled */ \
+  X(GltfMs, "GLTF_MS", "materials/gltf_ms.glsl") /* multiple-scattering compensation (every glTF material; off: --gltf-ms off) */
 
 namespace pt {
 

@@ -42,7 +42,7 @@ struct GltfLobes {
 
   // The lobes a material uses (materials/features.h): each is compiled in only then.
   unsigned features(bool specular_map = false) const {
-    unsigned f = 0;
+    unsigned f = feature_bit(MaterialFeature::GltfMs);  // every glTF material: the compensation (the renderer may drop it)
     if (transmission > 0.0f) f |= feature_bit(MaterialFeature::GltfTransmission);
     if (specular != 1.0f || specularColor != glm::vec3(1.0f) || specular_map) f |= feature_bit(MaterialFeature::GltfSpecular);
     if (clearcoat > 0.0f) f |= feature_bit(MaterialFeature::GltfClearcoat);

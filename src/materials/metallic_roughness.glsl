@@ -13,6 +13,11 @@
 // sheen lobes); the pdf is the mixture's (one-sample MIS, as pbrt's BSDFs do). Below
 // roughness 0.03 a specular lobe is a mirror chosen with its probability, weight F / p;
 // the material is a delta one only when every lobe it has is.
+// With HAS_GLTF_MS (the default; materials/gltf_ms.glsl) the GGX lobes' multiple scattering
+// is compensated (Kulla and Conty 2017): the metal gains F_ms (1 - E(n.v)) (1 - E(n.l)) /
+// (pi (1 - E_avg)) and the dielectric's base is weighted by (1 - E_s(n.v)) (1 - E_s(n.l)) /
+// (1 - E_s,avg) instead of (1 - w max(F_d)), both reciprocal and cosine-sampled with the
+// diffuse lobe; without it, the specification's single-scattering model above.
 #include "ggx.glsl"
 
 // Two unit numbers of one slot (materials/gltf_lobes.h gltf_pack2: 12 bits each).
@@ -37,6 +42,10 @@ struct MrLobes {
   vec3 sheen;
   float sheen_roughness;
   float transmission;  // thin-walled KHR_materials_transmission
+#ifdef HAS_GLTF_MS
+  vec2 ms_eo;    // (E, E2) of the base's GGX lobe at wo (mr_lobes_at)
+  vec2 ms_eavg;  // their averages
+#endif
 };
 
 MrLobes mr_lobes(MaterialRec m) {
@@ -94,6 +103,45 @@ float mr_schlick5(float c) {
 vec3 mr_fresnel_layer(MrLobes l, float c) { return l.specular * (l.f0 + (1.0 - l.f0) * mr_schlick5(c)); }
 vec3 mr_fresnel_metal(MaterialRec m, float c) { return m.tint + (1.0 - m.tint) * mr_schlick5(c); }
 
+#ifdef HAS_GLTF_MS
+// (E, E2) of the base's GGX lobe at mu and their averages (gltf_ms.glsl); a mirror's exactly:
+// E = 1, E2 = (1 - mu)^5, averages 1 and 1/21.
+vec2 mr_ms_e(MrLobes l, float mu) { return mr_smooth(l.roughness) ? vec2(1.0, mr_schlick5(mu)) : gltf_ms_e(mu, l.roughness); }
+vec2 mr_ms_eavg(MrLobes l) { return mr_smooth(l.roughness) ? vec2(1.0, 1.0 / 21.0) : gltf_ms_eavg(l.roughness); }
+// The dielectric layer's albedo specular (f0 E + (1 - f0) E2), f0 = max(F0) (its largest channel's).
+float mr_layer_albedo(MrLobes l, vec2 e) {
+  float f0 = max3(l.f0);
+  return l.specular * (f0 * e.x + (1.0 - f0) * e.y);
+}
+// The metal's Fresnel colour of the compensation lobe, F_avg^2 E_avg / (1 - F_avg (1 - E_avg)).
+vec3 mr_ms_fresnel(MaterialRec m, float eavg) {
+  vec3 favg = m.tint + (1.0 - m.tint) * (1.0 / 21.0);
+  return favg * favg * eavg / (1.0 - favg * (1.0 - eavg));
+}
+// (the dielectric base's weight, the metal's compensation lobe without its colour) at wo, wi
+// (cosines co, ci): (1 - E_s(co)) (1 - E_s(ci)) / (1 - E_s,avg), (1 - E(co)) (1 - E(ci)) / (pi (1 - E_avg)).
+// (llvmpipe compiles each lookup of a constant array in time proportional to its size: the
+// lookups at wo are made once per call, in mr_lobes_at, and sample_metallic_roughness
+// evaluates the BSDF at one place.)
+vec2 mr_ms_weights(MrLobes l, float ci) {
+  vec2 eo = l.ms_eo, ei = mr_ms_e(l, ci), ea = l.ms_eavg;
+  float so = mr_layer_albedo(l, eo), si = mr_layer_albedo(l, ei), sa = mr_layer_albedo(l, ea);
+  float kd = sa < 1.0 - 1e-6 ? (1.0 - so) * (1.0 - si) / (1.0 - sa) : 0.0;
+  float km = ea.x < 1.0 - 1e-6 ? (1.0 - eo.x) * (1.0 - ei.x) / (PI * (1.0 - ea.x)) : 0.0;
+  return vec2(kd, km);
+}
+#endif
+
+// The lobes with what the compensation needs at wo.
+MrLobes mr_lobes_at(MaterialRec m, vec3 wo) {
+  MrLobes l = mr_lobes(m);
+#ifdef HAS_GLTF_MS
+  l.ms_eo = mr_ms_e(l, wo.z);
+  l.ms_eavg = mr_ms_eavg(l);
+#endif
+  return l;
+}
+
 // What the layers over the base leave of it: the coat's (1 - clearcoat F_c(n_c.wo)) and
 // the sheen's albedo scaling (its min over wo and wi).
 float mr_coat_weight(MrLobes l, vec3 wo) {
@@ -118,11 +166,21 @@ float mr_sheen_scale(MrLobes l, float cos_o, float cos_i) {
 // rest is the cosine-weighted hemisphere.
 vec3 mr_probabilities(MaterialRec m, MrLobes l, vec3 wo) {
   float ws = l.metallic * luminance(mr_fresnel_metal(m, wo.z)) + (1.0 - l.metallic) * max3(mr_fresnel_layer(l, wo.z));
+#ifdef HAS_GLTF_MS
+  // the base's albedo at wo (1 - E_s(wo)) and the metal's compensation lobe's, F_ms (1 - E(wo))
+  vec2 eo = l.ms_eo, ea = l.ms_eavg;
+  float wd = (1.0 - l.metallic) * (1.0 - mr_layer_albedo(l, eo)) * luminance(m.tint);
+  float wm = l.metallic * (1.0 - eo.x) * luminance(mr_ms_fresnel(m, ea.x));
+#else
   float wd = (1.0 - l.metallic) * (1.0 - max3(mr_fresnel_layer(l, wo.z))) * luminance(m.tint);
+#endif
   float wc = mr_coat_weight(l, wo), wt = 0.0;
 #ifdef HAS_GLTF_TRANSMISSION
   wt = wd * l.transmission;
   wd -= wt;
+#endif
+#ifdef HAS_GLTF_MS
+  wd += wm;  // cosine-sampled with the diffuse lobe
 #endif
 #ifdef HAS_GLTF_SHEEN
   float e = max3(l.sheen) * gltf_sheen_albedo(wo.z, l.sheen_roughness);
@@ -164,7 +222,7 @@ vec3 mr_eval_transmission(MaterialRec m, MrLobes l, vec3 wo, vec3 wi, out float 
 vec3 eval_metallic_roughness(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;
   if (wo.z <= 0.0) return vec3(0.0);
-  MrLobes l = mr_lobes(m);
+  MrLobes l = mr_lobes_at(m, wo);
 #ifdef HAS_GLTF_TRANSMISSION
   if (wi.z < 0.0) return mr_eval_transmission(m, l, wo, wi, pdf);
 #endif
@@ -173,11 +231,19 @@ vec3 eval_metallic_roughness(MaterialRec m, vec3 wo, vec3 wi, bool entering, out
   float vh = dot(wo, h);
   vec3 fd = mr_fresnel_layer(l, vh);
   vec3 p = mr_probabilities(m, l, wo);
+#ifdef HAS_GLTF_MS
+  vec2 k = mr_ms_weights(l, wi.z);
+  vec3 f = (1.0 - l.metallic) * k.x * m.tint * (INV_PI * wi.z);
+#else
   vec3 f = (1.0 - l.metallic) * (1.0 - max3(fd)) * m.tint * (INV_PI * wi.z);
+#endif
   float pdf_base = (1.0 - p.y) * pdf_cosine_hemisphere(wi);
 #ifdef HAS_GLTF_TRANSMISSION
   f *= 1.0 - l.transmission;
   pdf_base *= 1.0 - p.z;
+#endif
+#ifdef HAS_GLTF_MS
+  f += l.metallic * k.y * mr_ms_fresnel(m, l.ms_eavg.x) * wi.z;  // the metal's multiple scattering
 #endif
   if (!mr_smooth(l.roughness)) {
     float alpha = l.roughness * l.roughness, a2 = alpha * alpha;
@@ -205,10 +271,11 @@ vec3 eval_metallic_roughness(MaterialRec m, vec3 wo, vec3 wi, bool entering, out
 
 bool sample_metallic_roughness(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {
   if (wo.z <= 0.0) return false;
-  MrLobes l = mr_lobes(m);
+  MrLobes l = mr_lobes_at(m, wo);
   vec3 p = mr_probabilities(m, l, wo);
   float uz = u.z;
   s.delta = false;
+  bool chosen = false;  // s.wi is the coat's: evaluate it (below, the one call of eval: each inlined copy costs compile time)
 #ifdef HAS_GLTF_CLEARCOAT
   if (uz < p.x) {
     bool smooth_coat = mr_smooth(l.coat_roughness);
@@ -220,45 +287,46 @@ bool sample_metallic_roughness(MaterialRec m, vec3 wo, bool entering, vec3 u, ou
       s.delta = true;
       return true;
     }
-    vec3 f = eval_metallic_roughness(m, wo, s.wi, entering, s.pdf);
-    s.weight = s.pdf > 0.0 ? f / s.pdf : vec3(0.0);
-    return s.pdf > 0.0;
+    chosen = true;
   }
   uz = (uz - p.x) / (1.0 - p.x);
 #endif
-  bool specular = uz < p.y;
-  if (specular && mr_smooth(l.roughness)) {
-    s.wi = vec3(-wo.x, -wo.y, wo.z);
-    s.weight = mr_mirror_fresnel(m, l, wo.z) / p.y;
+  if (!chosen) {
+    bool specular = uz < p.y;
+    if (specular && mr_smooth(l.roughness)) {
+      s.wi = vec3(-wo.x, -wo.y, wo.z);
+      s.weight = mr_mirror_fresnel(m, l, wo.z) / p.y;
 #if defined(HAS_GLTF_CLEARCOAT) || defined(HAS_GLTF_SHEEN)
-    s.weight *= (1.0 - mr_coat_weight(l, wo)) * mr_sheen_scale(l, wo.z, wo.z) / (1.0 - p.x);
+      s.weight *= (1.0 - mr_coat_weight(l, wo)) * mr_sheen_scale(l, wo.z, wo.z) / (1.0 - p.x);
 #endif
-    s.pdf = 0.0;
-    s.delta = true;
-    return true;
-  }
-#ifdef HAS_GLTF_TRANSMISSION
-  if (!specular && (uz - p.y) / (1.0 - p.y) < p.z) {  // the thin-walled transmission
-    if (mr_smooth(l.roughness)) {  // straight through
-      s.wi = -wo;
-      s.weight = (1.0 - l.metallic) * l.transmission * (1.0 - max3(mr_fresnel_layer(l, wo.z))) * m.tint *
-                 ((1.0 - mr_coat_weight(l, wo)) * mr_sheen_scale(l, wo.z, wo.z) / ((1.0 - p.x) * (1.0 - p.y) * p.z));
       s.pdf = 0.0;
       s.delta = true;
       return true;
     }
-    vec3 wr = reflect(-wo, sample_ggx_vndf(wo, l.roughness * l.roughness, u.xy));
-    if (wr.z <= 0.0) return false;
-    s.wi = vec3(wr.xy, -wr.z);
-    vec3 f = eval_metallic_roughness(m, wo, s.wi, entering, s.pdf);
-    s.weight = s.pdf > 0.0 ? f / s.pdf : vec3(0.0);
-    return s.pdf > 0.0;
-  }
-#endif
-  s.wi = specular ? reflect(-wo, sample_ggx_vndf(wo, l.roughness * l.roughness, u.xy)) : sample_cosine_hemisphere(u.xy);
+    bool transmitted = false;
 #ifdef HAS_GLTF_TRANSMISSION
-  if (s.wi.z <= 0.0) return false;  // a reflection below the horizon (not the transmission's)
+    if (!specular && (uz - p.y) / (1.0 - p.y) < p.z) {  // the thin-walled transmission
+      if (mr_smooth(l.roughness)) {  // straight through
+        s.wi = -wo;
+        s.weight = (1.0 - l.metallic) * l.transmission * (1.0 - max3(mr_fresnel_layer(l, wo.z))) * m.tint *
+                   ((1.0 - mr_coat_weight(l, wo)) * mr_sheen_scale(l, wo.z, wo.z) / ((1.0 - p.x) * (1.0 - p.y) * p.z));
+        s.pdf = 0.0;
+        s.delta = true;
+        return true;
+      }
+      vec3 wr = reflect(-wo, sample_ggx_vndf(wo, l.roughness * l.roughness, u.xy));
+      if (wr.z <= 0.0) return false;
+      s.wi = vec3(wr.xy, -wr.z);
+      transmitted = true;
+    }
 #endif
+    if (!transmitted) {
+      s.wi = specular ? reflect(-wo, sample_ggx_vndf(wo, l.roughness * l.roughness, u.xy)) : sample_cosine_hemisphere(u.xy);
+#ifdef HAS_GLTF_TRANSMISSION
+      if (s.wi.z <= 0.0) return false;  // a reflection below the horizon (not the transmission's)
+#endif
+    }
+  }
   vec3 f = eval_metallic_roughness(m, wo, s.wi, entering, s.pdf);
   s.weight = s.pdf > 0.0 ? f / s.pdf : vec3(0.0);
   return s.pdf > 0.0;
