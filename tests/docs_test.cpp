@@ -13,6 +13,7 @@
 #include "shadergen/shadergen.h"
 #include "gl_context.h"
 #include "scene_builders.h"
+#include "render/renderer.h"
 #include "test_paths.h"
 
 using namespace pt;
@@ -79,7 +80,7 @@ TEST_CASE("docs/scenes.md lists every shipped scene with its generated shader's 
   std::string table = "| scene | shapes | materials | lights sampled | shader (bytes) |\n|---|---|---|---|---|\n";
   for (const std::string& f : files) {
     const Scene scene = load_scene_file(repo_path(f));
-    const Features k = Features::of(scene);
+    const Features k = Renderer::scene_features(scene);  // the program the renderer builds (auto's traversal)
     std::string shapes, materials, lights;
     for (int i = 0; i < kNumShapeKinds; ++i) {
       if (k.has(ShapeKind(i))) shapes += std::string(shapes.empty() ? "" : ", ") + kShapeKinds[i].xml;

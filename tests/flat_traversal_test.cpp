@@ -11,6 +11,7 @@
 
 #include "gl_context.h"
 #include "glsl_harness.h"
+#include "render/packing.h"
 #include "render/renderer.h"
 #include "core/file_io.h"
 #include "scene/xml_loader.h"
@@ -98,14 +99,14 @@ TEST_CASE("flat traversal: the same image and ray count as the BVH's", "[gpu][ac
   }
 }
 
-TEST_CASE("flat traversal: auto follows the primitive count; bvh and flat override it", "[gpu][accel]") {
+TEST_CASE("flat traversal: auto follows the SAH rule; bvh and flat override it", "[gpu][accel]") {
   const Scene small = load_scene_file(repo_path("scenes/reference/scene2.xml"));
   std::string xml = "<SceneLevel><Camera position=\"0 0 30\"/><Objects>";
-  for (int i = 0; i < int(kFlatMaxPrimitives) + 1; ++i)
+  for (int i = 0; i < int(kFlatMaxConsidered) + 1; ++i)
     xml += "<Sphere center=\"" + std::to_string(i % 10) + " " + std::to_string(i / 10) + " 0\" radius=\"0.4\"><Diffuse/></Sphere>";
   const Scene big = load_scene_text(xml + "</Objects></SceneLevel>", "big.xml");
-  REQUIRE(scene_primitives(small) <= kFlatMaxPrimitives);
-  REQUIRE(scene_primitives(big) > kFlatMaxPrimitives);
+  REQUIRE(accel_costs(small).flat());
+  REQUIRE_FALSE(accel_costs(big).flat());
   test_gl();
   Renderer r;
   r.resize(8, 8);

@@ -14,6 +14,7 @@
 #     --seeds LIST         instead, these seeds (gen_scenes.py's form: 3,14,20-25)
 #     --kernels "A B"      kernels to run (default "compute fragment")
 #     --no-shipped         only the generated scenes
+#     --launcher CMD       run each render through CMD (the sanitizer build's tools/lsan_retry.sh)
 #
 # Writes OUTDIR/nan_hunt.log: one line per render (scene, kernel, exit status, spp, samples
 # = spp x pixels, non-finite samples), then the totals and the seed list; each render's
@@ -27,7 +28,7 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bin="${1:?usage: nan_hunt.sh BIN OUTDIR [options]}"
 out="${2:?usage: nan_hunt.sh BIN OUTDIR [options]}"
 shift 2
-size=1920x1080 seconds=8 spp=1000000 generated=200 first=1 kernels="compute fragment" shipped=1 seeds=""
+size=1920x1080 seconds=8 spp=1000000 generated=200 first=1 kernels="compute fragment" shipped=1 seeds="" launcher=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --size) size="$2"; shift ;;
@@ -38,6 +39,7 @@ while [[ $# -gt 0 ]]; do
     --seeds) seeds="$2"; shift ;;
     --kernels) kernels="$2"; shift ;;
     --no-shipped) shipped=0 ;;
+    --launcher) launcher="$2"; shift ;;
     *) echo "nan_hunt.sh: unknown option $1" >&2; exit 1 ;;
   esac
   shift
@@ -66,7 +68,7 @@ for s in "${scenes[@]}"; do
     o="$out/out/$(echo "$name" | tr '/' '-')-$k.txt"
     time_args=()
     [[ "$seconds" != 0 ]] && time_args=(--seconds "$seconds")
-    (cd "$repo" && "$bin" render "$s" --size "$size" ${time_args[@]+"${time_args[@]}"} --spp "$spp" --kernel "$k" --out "$out/last.png") >"$o" 2>&1
+    (cd "$repo" && $launcher "$bin" render "$s" --size "$size" ${time_args[@]+"${time_args[@]}"} --spp "$spp" --kernel "$k" --out "$out/last.png") >"$o" 2>&1
     rc=$?
     python3 - "$o" "$name" "$k" "$rc" "$size" >>"$log" <<'EOF'
 import re, sys
@@ -83,7 +85,7 @@ EOF
   done
 done
 python3 - "$log" <<'EOF'
-import sys
+import os, sys
 rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1]) if not l.startswith("#")]
 samples = sum(int(r[4]) for r in rows)
 bad = sum(int(r[5]) for r in rows if r[5] != "-")
@@ -95,6 +97,11 @@ for r in with_bad:
     lines.append("# non-finite: %s (%s kernel): %s of %s samples" % (r[0], r[1], r[5], r[4]))
 for r in failed:
     lines.append("# failed: %s (%s kernel): exit %s" % (r[0], r[1], r[2]))
+    # The render's own words (a sanitizer's report, a GL error), so that a failure in CI can
+    # be read from the log alone.
+    out = os.path.join(os.path.dirname(sys.argv[1]), "out", "%s-%s.txt" % (r[0].replace("/", "-"), r[1]))
+    if os.path.exists(out):
+        lines += ["#   " + l for l in open(out, errors="replace").read().splitlines()[-40:]]
 open(sys.argv[1], "a").write("\n".join(lines) + "\n")
 print("\n".join(lines))
 sys.exit(1 if failed else (3 if bad else 0))

@@ -1,6 +1,6 @@
 // The acceleration a scene's program traverses: its BVH (accel/bvh.h), or none - every ray
 // tests every primitive in one plain loop (shaders/bvh.glsl, HAS_FLAT). A program
-// feature (shadergen.h: Features::flat), chosen per scene by its primitive count unless
+// feature (shadergen.h: Features::flat), chosen per scene by the rule below unless
 // the user says (--accel, the page's accel=). The packing is the same either way: the
 // primitives stay in the BVH's leaf order, so the two loops differ only in the order they
 // test them (the same nearest hit but for exact ties of t).
@@ -12,22 +12,22 @@ namespace pt {
 enum class Accel { Auto, Bvh, Flat };
 inline constexpr const char* kAccelNames[] = {"auto", "bvh", "flat"};
 
-// `auto`'s rule: flat for a scene of at most this many primitives (each triangle of a mesh
-// counts, and each plane), else the BVH. Measured (docs/benchmarks.md, "Fragment-pass
-// steps (issue 17)"), bvh against flat: on the H200 (1080p, 8 bounces, 5 s each) flat was
-// faster on scene2 (10 primitives: fragment 1.51x, compute 1.12x) and slower on scene0
-// (13: 0.83x, 0.85x) and the Cornell box (32 triangles: 0.79x, 0.64x); in SwiftShader's
-// page (loaded machine) scene2 1.0-1.8x, scene0 0.75-0.89x; on llvmpipe flat won up to
-// ~24-64 primitives of scene2's room. A count cannot tell a room whose every wall each ray
-// overlaps (scene2: the BVH culls little) from one where it culls well (scene0), so 12 is
-// fitted to these three scenes; a rule from the BVH's own SAH cost against the flat
-// loop's is the next step.
-inline constexpr long kFlatMaxPrimitives = 12;
+// `auto`'s rule, from the scene's own BVH: flat when the loop's cost per ray (every
+// bounded primitive tested: `bounded`, the BVH's primitives; planes are tested by every ray
+// either way) is at most kFlatPerSah times the BVH's expected cost per ray in the SAH model
+// (Bvh::sah_cost: the surface-area-weighted node visits and primitive tests; PackedScene::
+// bvh_sah_cost), and the scene has at most kFlatMaxConsidered such primitives (beyond it
+// the loop never pays, and the rule need not pack the scene to decide). A count alone
+// cannot tell a room whose every wall each ray overlaps (scene2: its BVH culls little, SAH
+// cost 8.5 for 9 bounded primitives) from one where it culls well (scene0, the Cornell box).
+// kFlatPerSah is fitted to the measurements in docs/benchmarks.md ("Fragment-pass steps
+// (issue 17)"), each scene's SAH cost beside its bvh/flat speeds.
+inline constexpr long kFlatMaxConsidered = 64;
+inline constexpr double kFlatPerSah = 2.2;
 
-inline bool auto_flat(long primitives) { return primitives <= kFlatMaxPrimitives; }
-
-// Whether a program traverses nothing: `a`, or the rule for `primitives` when a is Auto.
-inline bool choose_flat(Accel a, long primitives) { return a == Accel::Auto ? auto_flat(primitives) : a == Accel::Flat; }
+inline bool auto_flat(long bounded, double sah_cost) {
+  return bounded <= kFlatMaxConsidered && double(bounded) <= kFlatPerSah * sah_cost;
+}
 
 inline const char* accel_name(Accel a) { return kAccelNames[int(a)]; }
 inline bool accel_from_name(const char* s, Accel* out) {

@@ -26,6 +26,7 @@ App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make
   settings_.sample_limit = options_.sample_limit;
   settings_.coarse = options_.coarse;
   settings_.accel = options_.accel;
+  settings_.gltf_ms = options_.gltf_ms;
   settings_.band_rows = FramePacer::kFirstBandRows;
   // The auxiliaries stay on with the denoiser off: they draw no random numbers (the mean is
   // the same bytes, docs/denoise.md), so the toggle changes the image shown and never
@@ -81,13 +82,24 @@ void App::frame(int fb_w, int fb_h, double now_ms) {
   handle_click();
   const glm::ivec2 size = render_size(fb_w, fb_h, now_ms);
   renderer_->resize(size.x, size.y);
-  draw_panel();
-  draw_selection_panel(fb_w);
+  if (options_.raw_rows == 0) {
+    draw_panel();
+    draw_selection_panel(fb_w);
+  }
   renderer_->set_settings(render_settings());  // restarts only when the estimate changes
   render_passes(now_ms, dt_ms);
   update_error(now_ms);
   update_auto_exposure();
-  present(fb_w, fb_h);
+  frame_key_ = {fb_w, fb_h, renderer_->width(), renderer_->height(), renderer_->samples(), renderer_->settings()};
+}
+
+bool App::present_due(double now_ms) const {
+  // Draws of part of a sweep (bands, tiles) change a sliver of the image: shown every
+  // kPartialMs, not every frame, since presenting is a full-canvas pass (SwiftShader: most
+  // of a frame's time at 960x640). A whole sample (a finished sweep, a restart) shows at once.
+  const double since = now_ms - presented_ms_;
+  if (options_.raw_rows > 0) return since >= kRawShowMs;
+  return !(frame_key_ == presented_) || (drew_ && since >= kPartialMs) || since >= kRefreshMs;
 }
 
 void App::update_auto_exposure() {
@@ -102,7 +114,21 @@ void App::update_auto_exposure() {
 void App::render_passes(double now_ms, double dt_ms) {
   if (renderer_->samples() == 0 && !renderer_->mid_sweep()) restart_ms_ = now_ms;
   // The draws of this frame, sized by the interval between frames (render/pacing.h).
-  const int done = pacer_.frame(*renderer_, settings_, dt_ms, now_ms, preparing(), total_samples_);
+  int done = 0;
+  if (options_.raw_rows > 0) {  // the raw pass: fixed whole-row draws, one a frame
+    settings_.band_rows = options_.raw_rows >= renderer_->height() ? 0 : options_.raw_rows;
+    settings_.band_columns = 0;
+    settings_.spp_per_pass = 1;
+    renderer_->set_settings(render_settings());
+    if (!renderer_->converged()) {
+      renderer_->step();
+      total_samples_ += double(renderer_->last_draw_samples()) / std::max(1.0, double(renderer_->width()) * renderer_->height());
+      done = 1;
+    }
+  } else {
+    done = pacer_.frame(*renderer_, settings_, dt_ms, now_ms, preparing(), total_samples_);
+  }
+  drew_ = done > 0;
   if (!renderer_->converged()) done_ms_ = -1.0;  // a raised limit resumes the clock
   else if (done_ms_ < 0) done_ms_ = now_ms;
   if (done == 0) {
@@ -118,7 +144,9 @@ void App::render_passes(double now_ms, double dt_ms) {
   if (now_ms - first.ms >= 1000.0 || finished) samples_per_second_ = (total_samples_ - first.samples) * 1000.0 / (now_ms - first.ms);
 }
 
-void App::present(int fb_w, int fb_h) {
+void App::present(int fb_w, int fb_h, double now_ms) {
+  presented_ = frame_key_;
+  presented_ms_ = now_ms;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, fb_w, fb_h);
   glClearColor(0.06f, 0.06f, 0.07f, 1.0f);

@@ -40,6 +40,10 @@ struct AppOptions {
   float target_relmse = 0.0f;                            // stop once the estimate is at most this; 0 = none
   bool coarse = true;                                    // the coarse first image after a restart (render/coarse.h)
   Accel accel = Accel::Auto;                             // the traversal (accel/accel_choice.h; the URL's accel=)
+  bool gltf_ms = true;                                   // the glTF BSDF's energy compensation (the URL's gltfms=off: the spec's model)
+  // The raw pass, a measurement (the URL's raw=ROWS, tools/page_cost.mjs): one draw of this
+  // many whole rows per frame, no pacing, no panel, the image shown every kRawShowMs; 0: the page.
+  int raw_rows = 0;
   std::string gl_renderer;                               // shown in the panel and the stats
   // Hands a finished file to the platform (the page downloads it); unset: no save buttons.
   std::function<void(const std::string& name, const std::vector<uint8_t>& bytes, const char* mime)> save_file;
@@ -55,9 +59,19 @@ class App {
   // float targets (the platform shows that message instead of a blank canvas).
   explicit App(AppOptions options);
 
-  // One displayed frame into the default framebuffer of size fb_w x fb_h (device
-  // pixels). now_ms: a monotonic clock. Builds the ImGui panel, does not render ImGui.
+  // One animation frame: input, the ImGui panel (built, not rendered) and the draws.
+  // now_ms: a monotonic clock. The image reaches the default framebuffer (fb_w x fb_h,
+  // device pixels) only through present(), which the platform calls when present_due()
+  // or the panel changed: an unchanged canvas is not drawn again (the browser keeps
+  // showing the last frame), so an idle page costs the GPU nothing.
   void frame(int fb_w, int fb_h, double now_ms);
+  // Whether this frame changed the image: another sample count, size or display setting,
+  // draws kPartialMs after the last present, or kRefreshMs since it (anything else that shows).
+  bool present_due(double now_ms) const;
+  // Clears the default framebuffer and draws the image into it (then the platform draws
+  // the panel over it).
+  void present(int fb_w, int fb_h, double now_ms);
+  static constexpr double kRefreshMs = 250.0, kPartialMs = 100.0, kRawShowMs = 1000.0;
 
   // Test hooks.
   std::string stats_json() const;                        // see web/index.html: ptStats()
@@ -109,7 +123,6 @@ class App {
   void draw_panel();
   void draw_scene_controls();
   void render_passes(double now_ms, double dt_ms);
-  void present(int fb_w, int fb_h);
   void scan_scenes();
   // app_loading.cpp: scenes through the pipeline. edit: the shown scene again (an edit, a
   // lost context): the page's settings are kept.
@@ -143,6 +156,15 @@ class App {
 
   // Frame pacing: the draws per frame and their size follow the interval between frames.
   double last_frame_ms_ = -1.0;
+  // What the last present() showed (present_due()).
+  struct Shown {
+    int fb_w = -1, fb_h = -1, w = -1, h = -1, samples = -1;
+    RenderSettings settings;
+    bool operator==(const Shown&) const = default;
+  };
+  Shown presented_, frame_key_;  // the last presented; this frame's
+  bool drew_ = false;           // this frame drew samples
+  double presented_ms_ = -1e9;
   FramePacer pacer_;
 
   // Progress: samples per second over the last few seconds of rendering (frames can be

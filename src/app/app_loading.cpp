@@ -181,6 +181,7 @@ void App::context_restored() {
   gl_objects::context_replaced();
   const Camera camera = renderer_->camera();
   present_fbo_ = Framebuffer();
+  presented_ms_ = -1e9;  // the restored canvas is blank: present the next frame
   present_tex_ = Texture();
   renderer_ = std::make_unique<Renderer>();
   renderer_->set_settings(settings_);

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "render/packing.h"
 #include "render/scene_render.h"
 #include "scene/env_map.h"
 #include "scene/xml_loader.h"
@@ -34,6 +35,8 @@ const char* const kUsage =
     "                    (the WebGL 2 pass the page runs); same estimate, see docs/benchmarks.md\n"
     "  --accel A         auto (default: flat for a scene of few primitives, else bvh; render and bench\n"
     "                    print the rule), bvh, or flat (every ray tests every primitive); same estimate\n"
+    "  --gltf-ms on|off  the glTF BSDF's multiple-scattering energy compensation (default on; off:\n"
+    "                    the specification's single-scattering model, as other renderers; docs/gltf.md)\n"
     "  --adaptive on|off per-tile sample counts from the variance (default off; docs/benchmarks.md,\n"
     "                    \"adaptive sampling\"); each pixel stays the mean of its own samples\n"
     "render: --spp N (default 64), or until --seconds S if that comes first (references);\n"
@@ -117,6 +120,10 @@ Options parse_options(int argc, char** argv, bool bench) {
     } else if (a == "--accel") {
       const char* v = next();
       if (!accel_from_name(v, &o.settings.accel)) usage_error("--accel takes auto, bvh or flat");
+    } else if (a == "--gltf-ms") {
+      const std::string v = next();
+      if (v != "on" && v != "off") usage_error("--gltf-ms takes on or off");
+      o.settings.gltf_ms = v == "on";
     } else if (a == "--adaptive") {
       const std::string v = next();
       if (v != "on" && v != "off") usage_error("--adaptive takes on or off");
@@ -184,12 +191,14 @@ RenderSettings settings_for(const Options& o, const Scene& scene) {
 
 std::string accel_line(const Renderer& r, const Scene& scene) {
   const Accel a = r.settings().accel;
-  const long n = scene_primitives(scene);
-  char why[128];
-  if (a == Accel::Auto)
-    std::snprintf(why, sizeof why, "auto: %ld primitives, flat up to %ld", n, kFlatMaxPrimitives);
+  const AccelCosts c = accel_costs(scene);
+  char why[160];
+  if (a == Accel::Auto && c.bounded > kFlatMaxConsidered)
+    std::snprintf(why, sizeof why, "auto: %ld primitives in the BVH, over %ld", c.bounded, kFlatMaxConsidered);
+  else if (a == Accel::Auto)
+    std::snprintf(why, sizeof why, "auto: %ld primitives in the BVH, its SAH cost %.2f; flat when at most %.2f x the cost", c.bounded, c.sah, kFlatPerSah);
   else
-    std::snprintf(why, sizeof why, "--accel %s; %ld primitives", accel_name(a), n);
+    std::snprintf(why, sizeof why, "--accel %s; %ld primitives in the BVH, its SAH cost %.2f", accel_name(a), c.bounded, c.sah);
   return std::string("acceleration: ") + (r.using_flat() ? "flat" : "bvh") + " (" + why + ")";
 }
 

@@ -57,8 +57,14 @@ void frame() {
   sync_canvas_size(&w, &h);
   g_app->set_display(float(emscripten_get_device_pixel_ratio()), pt::web::touch_screen());
   pt::web::imgui_begin(w, h);
-  g_app->frame(w, h, emscripten_get_now());
-  pt::web::imgui_end();
+  const double now = emscripten_get_now();
+  g_app->frame(w, h, now);
+  // An unchanged image under an unchanged panel is not drawn again (App::present_due).
+  const bool panel_changed = pt::web::imgui_render();
+  if (panel_changed || g_app->present_due(now)) {
+    g_app->present(w, h, now);
+    pt::web::imgui_draw();
+  }
   g_prepare.drawn(t0, emscripten_get_now());
   if (g_app->preparing()) pt::web::pump_work(pt::PreparePacer::kSliceMs);
 }

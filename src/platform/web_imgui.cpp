@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 
 #include <GLFW/glfw3.h>
 #include <emscripten/html5.h>
@@ -145,9 +146,35 @@ void imgui_touch(float x, float y, bool down) {
 
 bool touch_screen() { return g_touch_screen; }
 
-void imgui_end() {
+bool imgui_render() {
   ImGui::Render();
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  // FNV-1a over what the draw lists draw: vertices, indices, and each command's clip,
+  // texture and range; the panel changes the canvas only when this does.
+  static uint64_t last = 0;
+  uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](const void* p, size_t n) {
+    const unsigned char* b = static_cast<const unsigned char*>(p);
+    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  const ImDrawData* d = ImGui::GetDrawData();
+  mix(&d->DisplaySize, sizeof(d->DisplaySize));
+  for (int l = 0; l < d->CmdListsCount; ++l) {
+    const ImDrawList* list = d->CmdLists[l];
+    mix(list->VtxBuffer.Data, size_t(list->VtxBuffer.Size) * sizeof(ImDrawVert));
+    mix(list->IdxBuffer.Data, size_t(list->IdxBuffer.Size) * sizeof(ImDrawIdx));
+    for (const ImDrawCmd& c : list->CmdBuffer) {
+      mix(&c.ClipRect, sizeof(c.ClipRect));
+      mix(&c.TextureId, sizeof(c.TextureId));
+      mix(&c.ElemCount, sizeof(c.ElemCount));
+      mix(&c.IdxOffset, sizeof(c.IdxOffset));
+      mix(&c.VtxOffset, sizeof(c.VtxOffset));
+    }
+  }
+  const bool changed = h != last;
+  last = h;
+  return changed;
 }
+
+void imgui_draw() { ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData()); }
 
 }  // namespace pt::web

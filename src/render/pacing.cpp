@@ -86,21 +86,30 @@ void FramePacer::scale_draw(double factor, int w, int h, RenderSettings& s) {
 }
 
 // Frames still slow after a shrink from shrink_from_pixels_ (frames then
-// shrink_from_ms_) to `pixels` (frames now `ms`): the difference prices a pixel. When
-// even the smallest draw would leave frames slower than kSlowDrawFrameMs, the fixed cost
-// of a frame is what makes them slow (a software GL at a large canvas, or a loaded
-// machine): smaller draws would only slow the sweep down, so the draw goes back to the
-// size before the shrink and stays at least that for kDrawFloorMs. True when it did.
-bool FramePacer::judge_shrink(double pixels, double ms, double now_ms, int w, int h, RenderSettings& s) {
-  const double from = shrink_from_pixels_;
-  shrink_from_pixels_ = 0.0;
+// shrink_from_ms_) to `pixels` (frames now `ms`): the difference prices a pixel. When the
+// price says that even the smallest draw would leave frames slower than kSlowDrawFrameMs,
+// the fixed cost of a frame may be what makes them slow (a software GL at a large canvas,
+// or a loaded machine), and smaller draws would only slow the sweep down. A price from
+// two noisy frame intervals is only a guess (on a loaded machine it once held draws of 4
+// whole rows at 28 UI frames/s, where a frame without draws took 24 ms: CI, load_test),
+// so the smallest draw is measured: the draw jumps there (the probe) and, when frames
+// there are still slow, goes back to the size before the shrink and stays at least that
+// for kDrawFloorMs. True when it changed the draw.
+bool FramePacer::judge_shrink(double pixels, double ms, double now_ms, bool smallest, int w, int h, RenderSettings& s) {
+  const double from = probe_from_pixels_ > 0.0 && smallest ? probe_from_pixels_ : shrink_from_pixels_;
+  shrink_from_pixels_ = probe_from_pixels_ = 0.0;
   if (from <= pixels) return false;
+  if (smallest) {  // measured: still slow at the smallest draw
+    floor_pixels_ = from;
+    floor_set_ms_ = now_ms;
+    scale_draw(from / pixels, w, h, s);
+    return true;
+  }
   const double per_pixel = std::max(0.0, (shrink_from_ms_ - ms) / (from - pixels));
-  const double smallest = double(std::min(kMinBandRows, h)) * min_band_columns(w, h);
-  if (ms - per_pixel * std::max(0.0, pixels - smallest) <= kSlowDrawFrameMs) return false;
-  floor_pixels_ = from;
-  floor_set_ms_ = now_ms;
-  scale_draw(from / pixels, w, h, s);
+  const double least = double(std::min(kMinBandRows, h)) * min_band_columns(w, h);
+  if (ms - per_pixel * std::max(0.0, pixels - least) <= kSlowDrawFrameMs) return false;
+  probe_from_pixels_ = from;
+  scale_draw(least / pixels, w, h, s);
   return true;
 }
 
@@ -124,7 +133,7 @@ int FramePacer::frame(Renderer& r, RenderSettings& s, double dt_ms, double now_m
     } else if (dt_ms > 2.0 * kSlowDrawFrameMs) {  // far too slow: the draw, surely; shrink at once
       shrink_from_pixels_ = 0.0;
       if (!smallest) scale_draw(std::min(0.5, kTargetFrameMs / dt_ms), w, h, s);
-    } else if (faster > kSlowDrawFrameMs && !judge_shrink(pixels, faster, now_ms, w, h, s) && !smallest && pixels > floor_pixels_) {
+    } else if (faster > kSlowDrawFrameMs && !judge_shrink(pixels, faster, now_ms, smallest, w, h, s) && !smallest && pixels > floor_pixels_) {
       shrink_from_pixels_ = pixels;
       shrink_from_ms_ = faster;
       scale_draw(0.7, w, h, s);
@@ -150,7 +159,7 @@ int FramePacer::frame(Renderer& r, RenderSettings& s, double dt_ms, double now_m
   // ratchet the count up and the next restart would start with one very long frame.
   if (dt_ms > 0 && done == passes_per_frame_ && !busy && settled) {
     if (!whole && slower < kGrowDrawFrameMs) {
-      shrink_from_pixels_ = 0.0;  // a shrink that let frames get fast did its job
+      shrink_from_pixels_ = probe_from_pixels_ = 0.0;  // a shrink (or a probe) that let frames get fast did its job
       scale_draw(slower < kFastFrameMs ? 2.0 : 1.25, w, h, s);
     } else if (whole && dt_ms < kFastFrameMs) {
       passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);

@@ -75,13 +75,14 @@ class FramePacer {
  private:
   int min_band_columns(int w, int h) const;
   void scale_draw(double factor, int w, int h, RenderSettings& s);
-  bool judge_shrink(double pixels, double ms, double now_ms, int w, int h, RenderSettings& s);
+  bool judge_shrink(double pixels, double ms, double now_ms, bool smallest, int w, int h, RenderSettings& s);
 
   int passes_per_frame_ = 1;
   int draw_settle_ = 0;      // frames before the draw size may change again
   double prev_dt_ms_ = 0.0;  // the interval before the last one
   double shrink_from_pixels_ = 0.0, shrink_from_ms_ = 0.0;  // the last shrink: draw size and frame time before it
   double floor_pixels_ = 0.0, floor_set_ms_ = -1e9;  // no shrink below this, for a while (judge_shrink)
+  double probe_from_pixels_ = 0.0;  // at the smallest draw to measure it: the size to go back to (judge_shrink)
 };
 
 }  // namespace pt

@@ -96,14 +96,22 @@ TEST_CASE("FramePacer follows the interval between frames", "[gpu][pacing]") {
   CHECK(p.passes_per_frame() > 1);
 }
 
-TEST_CASE("FramePacer undoes a shrink that leaves frames as slow, for 5 s", "[gpu][pacing]") {
-  test_gl();
+// A 256x128 image with no scene (draws cost nothing: only the intervals fed count),
+// after the pacer's first frame.
+struct SlowFrames {
+  SlowFrames() {
+    r.resize(256, 128);
+    double samples = 0.0;
+    p.frame(r, s, 0.0, now, false, samples);
+  }
+  pt::HeadlessGl& gl = test_gl();  // before the renderer
   Renderer r;
-  r.resize(256, 128);
   RenderSettings s;
   FramePacer p;
-  double now = 0.0, samples = 0.0;
-  p.frame(r, s, 0.0, now, false, samples);
+  double now = 0.0;
+};
+
+TEST_CASE_METHOD(SlowFrames, "FramePacer undoes a shrink that leaves frames as slow, for 5 s", "[gpu][pacing]") {
   frames(p, r, s, 1, 40.0, now);
   CHECK(s.band_rows == 0);  // one slow frame may be a hiccup
   frames(p, r, s, 1, 40.0, now);
@@ -111,7 +119,13 @@ TEST_CASE("FramePacer undoes a shrink that leaves frames as slow, for 5 s", "[gp
   frames(p, r, s, 2, 40.0, now);
   CHECK(s.band_rows == 89);  // settling
   frames(p, r, s, 1, 40.0, now);
-  CHECK(s.band_rows == 0);  // as slow as before: the frame's fixed cost, not the draw; undone
+  CHECK(s.band_rows == 4);  // as slow as before: the smallest draw is measured (the probe)
+  CHECK(s.band_columns == 128);
+  frames(p, r, s, 2, 40.0, now);
+  CHECK(s.band_rows == 4);  // settling
+  frames(p, r, s, 1, 40.0, now);
+  CHECK(s.band_rows == 0);  // as slow at the smallest draw: the frame's fixed cost, not the draw; undone
+  CHECK(s.band_columns == 0);
   const double floor_from = now;
   while (now - floor_from < 4900.0) {
     frames(p, r, s, 1, 40.0, now);
@@ -120,6 +134,21 @@ TEST_CASE("FramePacer undoes a shrink that leaves frames as slow, for 5 s", "[gp
   for (int waited = 0; s.band_rows == 0 && waited < 20; ++waited) frames(p, r, s, 1, 40.0, now);
   CHECK(s.band_rows == 89);  // the floor expired: tried again
   CHECK(now - floor_from > 5000.0);
+}
+
+TEST_CASE_METHOD(SlowFrames, "FramePacer keeps a probe's small draw when frames there are fast", "[gpu][pacing]") {
+  frames(p, r, s, 2, 40.0, now);
+  CHECK(s.band_rows == 89);  // slow: the draw shrinks by 0.7
+  frames(p, r, s, 3, 40.0, now);
+  CHECK(s.band_rows == 4);  // as slow: the probe
+  frames(p, r, s, 3, 25.0, now);
+  CHECK(s.band_rows == 4);  // the smallest draw gives fast frames: no floor, growth
+  CHECK(s.band_columns == 160);  // 1.25 x 128
+  frames(p, r, s, 3, 36.0, now);  // slow again: shrinks to the smallest draw
+  CHECK(s.band_columns == 128);
+  frames(p, r, s, 40, 36.0, now);  // as slow there, measured: back to the size before, for 5 s
+  CHECK(s.band_rows == 4);
+  CHECK(s.band_columns == 160);
 }
 
 TEST_CASE("FramePacer counts each draw's samples in fractions of the image", "[gpu][pacing]") {

@@ -2,10 +2,12 @@
 
 #include <climits>
 #include <chrono>
+#include <optional>
 #include <variant>
 
 #include "core/error.h"
 #include "render/light_select.h"
+#include "shadergen/shadergen.h"
 #include "shapes/triangle.h"
 
 namespace pt {
@@ -178,6 +180,7 @@ bool PackJob::run(long work) {
         builder_.reset();
         if (!velocity_.empty()) node_mover_ = sweep_bvh(bvh_, boxes_, mover_, velocity_, p_.motion_bound);
         p_.bvh_depth = bvh_.depth;
+        p_.bvh_sah_cost = bvh_.sah_cost();
         p_.prims.reserve(p_.unbounded + int(refs_.size()));
         p_.prim_leaf.assign(size_t(p_.unbounded) + refs_.size(), -1);
         p_.prim_shape.reserve(p_.prim_leaf.size());
@@ -404,6 +407,22 @@ PackedScene pack_scene(const Scene& scene) {
   while (!job.run(LONG_MAX)) {  // (long is 32 bits in wasm)
   }
   return job.take();
+}
+
+bool AccelCosts::flat() const { return auto_flat(bounded, sah); }
+
+AccelCosts accel_costs(const Scene& scene, const PackedScene* packed) {
+  // The count from the scene first, so that the choice is the same with and without a
+  // packing at hand (a packing drops degenerate triangles).
+  AccelCosts c;
+  c.bounded = scene_primitives(scene);
+  for (const Shape& s : scene.shapes) c.bounded -= info(s.kind()).bvh == BvhRole::Unbounded;
+  if (c.bounded > kFlatMaxConsidered) return c;
+  std::optional<PackedScene> own;
+  if (!packed) packed = &own.emplace(pack_scene(scene));  // a few dozen primitives: microseconds
+  c.bounded = packed->prims.count() - packed->unbounded;
+  c.sah = packed->bvh_sah_cost;
+  return c;
 }
 
 }  // namespace pt

@@ -3,6 +3,7 @@
 #pragma once
 #include <memory>
 
+#include "accel/accel_choice.h"
 #include "accel/bvh.h"
 #include "core/records.h"
 #include "scene/scene.h"
@@ -20,6 +21,9 @@ struct PackedScene {
   int bvh_depth = 0;
   float motion_bound = 0.0f;  // moving shapes are bounded over times [0, motion_bound]
   double bvh_build_ms = 0.0;
+  // The BVH's expected cost per ray in the SAH model (accel/bvh.h: Bvh::sah_cost; one node
+  // visit costs one primitive test), for the flat-or-BVH rule (accel/accel_choice.h).
+  double bvh_sah_cost = 0.0;
   // Who is whose, as integers from the packing itself (never read back from the float
   // records): each light record's shape (Renderer::update_values compares them); for
   // refit_shape, each BVH node's parent (-1: the root), first child or primitive and
@@ -54,6 +58,17 @@ Aabb swept_box(const Aabb& b, glm::vec3 velocity, float motion_bound);  // b and
 inline constexpr int kBvhStackSize = 48;
 
 PackedScene pack_scene(const Scene& scene);  // runs a PackJob to completion
+
+// What the flat-or-BVH rule (accel/accel_choice.h: auto_flat) weighs: the primitives in
+// the BVH (planes excluded: every ray tests them either way) and the BVH's SAH cost per
+// ray. Only for a scene of at most kFlatMaxConsidered of them (above, sah is 0: the rule
+// does not need it), from `packed` when given, else from a packing made here.
+struct AccelCosts {
+  long bounded = 0;
+  double sah = 0.0;
+  bool flat() const;  // auto_flat(bounded, sah)
+};
+AccelCosts accel_costs(const Scene& scene, const PackedScene* packed = nullptr);
 // An edit that moved or resized shape `shape` in place: its primitive record is written
 // again and the boxes of the BVH nodes above it recomputed up to the root
 // (the tree stays: it may bound less tightly than a new build, never wrongly). Analytic

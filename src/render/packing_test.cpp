@@ -6,6 +6,8 @@
 // of every shape role (planes outside the BVH, lone triangles, one degenerate, mesh instances),
 // packed in one run and in slices.
 #include <climits>
+#include <cstdio>
+#include <string>
 
 #include <catch2/catch.hpp>
 
@@ -98,4 +100,42 @@ TEST_CASE("the packing's light, parent, leaf and primitive tables agree with its
   CHECK(p.shape_prim[size_t(degenerate)] >= 0);
   const PackedScene q = pack_scene(flat);
   CHECK(q.shape_prim[size_t(degenerate)] == -1);  // not in the BVH: nothing to draw
+}
+
+// The flat-or-BVH rule (accel/accel_choice.h) weighs the scene's own BVH: at an equal
+// count, spheres nested in one place (every ray that meets one meets the others' boxes:
+// the BVH culls nothing, SAH cost above the count) get the loop, spheres spread in a row
+// (the BVH culls all but a few) the BVH. Planes are outside the BVH and do not count.
+TEST_CASE("auto traversal: the loop where it costs at most kFlatPerSah x the BVH's SAH cost", "[accel]") {
+  CHECK(auto_flat(1, 1.0));
+  CHECK(auto_flat(22, 10.0));
+  CHECK_FALSE(auto_flat(23, 10.0));
+  CHECK_FALSE(auto_flat(kFlatMaxConsidered + 1, 1e9));
+  const auto spheres = [](int n, float spacing) {
+    std::string xml = "<SceneLevel><Camera position=\"0 0 30\"/><Objects><Plane normal=\"0 1 0\" d=\"-5\"><Diffuse/></Plane>";
+    for (int i = 0; i < n; ++i)
+      xml += "<Sphere center=\"" + std::to_string(float(i) * spacing) + " 0 0\" radius=\"" + std::to_string(0.4f + 0.01f * float(i)) + "\"><Diffuse/></Sphere>";
+    return load_scene_text(xml + "</Objects></SceneLevel>", "spheres.xml");
+  };
+  const Scene nested = spheres(20, 0.0f), row = spheres(20, 3.0f);
+  const AccelCosts a = accel_costs(nested), b = accel_costs(row);
+  std::printf("20 nested spheres: SAH cost %.2f; 20 in a row: %.2f\n", a.sah, b.sah);
+  CHECK(a.bounded == 20);
+  CHECK(b.bounded == 20);
+  CHECK(a.sah > 10.0);
+  CHECK(b.sah < 8.0);
+  CHECK(a.flat());
+  CHECK_FALSE(b.flat());
+  // From the packing when given, the same figures; above kFlatMaxConsidered no packing at all.
+  const PackedScene p = pack_scene(row);
+  CHECK(accel_costs(row, &p).sah == b.sah);
+  const AccelCosts big = accel_costs(spheres(int(kFlatMaxConsidered) + 1, 0.0f));
+  CHECK(big.bounded == kFlatMaxConsidered + 1);
+  CHECK(big.sah == 0.0);
+  CHECK_FALSE(big.flat());
+  // The shipped scenes the rule was fitted on (docs/benchmarks.md): scene2's room gets the
+  // loop, scene0 and the Cornell box the BVH.
+  CHECK(accel_costs(load_scene_file(repo_path("scenes/reference/scene2.xml"))).flat());
+  CHECK_FALSE(accel_costs(load_scene_file(repo_path("scenes/reference/scene0.xml"))).flat());
+  CHECK_FALSE(accel_costs(load_scene_file(repo_path("scenes/cornell-box.xml"))).flat());
 }

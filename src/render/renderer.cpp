@@ -50,7 +50,15 @@ Renderer::~Renderer() {
   }
 }
 
-Features Renderer::features_for(const Scene& scene, RenderMode mode) const { return with_settings(Features::of(scene), mode); }
+// A scene's features with auto's choice of traversal (accel/accel_choice.h), from its
+// packed BVH when there is one.
+Features Renderer::scene_features(const Scene& scene, const PackedScene* packed) {
+  Features f = Features::of(scene);
+  f.flat = accel_costs(scene, packed).flat();
+  return f;
+}
+
+Features Renderer::features_for(const Scene& scene, RenderMode mode) const { return with_settings(scene_features(scene, nullptr), mode); }
 
 // The renderer's own settings on top of a scene's features: the one place they are set.
 Features Renderer::with_settings(Features f, RenderMode mode) const {
@@ -58,7 +66,8 @@ Features Renderer::with_settings(Features f, RenderMode mode) const {
   f.compute = using_compute();
   f.aux = settings_.aux;
   f.adaptive = settings_.adaptive;
-  if (settings_.accel != Accel::Auto) f.flat = settings_.accel == Accel::Flat;  // else the scene's rule (Features::of)
+  if (settings_.accel != Accel::Auto) f.flat = settings_.accel == Accel::Flat;  // else the scene's rule (scene_features)
+  if (!settings_.gltf_ms) f.material_features &= ~feature_bit(MaterialFeature::GltfMs);  // the spec's single scattering
   return f;
 }
 
@@ -84,7 +93,7 @@ void Renderer::set_scene(const Scene& scene, const PackedScene& p, StagedScene* 
   if (scene.environment.map)
     limits_.require_texture(scene.environment.map->width + 1, scene.environment.map->height + 1, "the environment map");
   const Features old = features_;
-  features_ = Features::of(scene);
+  features_ = scene_features(scene, &p);
   // Image maps first: a scene beyond this GPU's texture limits throws before anything changes.
   const bool textured = features_.image_maps();
   MapArray maps;

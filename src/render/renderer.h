@@ -41,6 +41,9 @@ struct RenderSettings {
   float denoise = 0.0f;  // with aux: the denoised image's blend weight in display() (0: raw)
   bool adaptive = false; // per-tile sample counts from the variance (render/adaptive.h); a change restarts
   Accel accel = Accel::Auto;  // BVH or a flat loop (accel/accel_choice.h); auto: by the primitive count
+  // The glTF BSDF's multiple-scattering energy compensation (materials/gltf_ms.glsl; on by
+  // default); off renders the specification's single-scattering model (for comparisons).
+  bool gltf_ms = true;
   // The coarse first image (render/coarse.h): after each restart, sweeps at 1/8, 1/4 and
   // 1/2 of each axis into targets of their own, shown until the first full-resolution
   // sweep is complete. The page's; off for the command line (its output stays the same).
@@ -144,7 +147,12 @@ class Renderer {
   // fragment pass. Same code, same estimate (tests/compute_kernel_test.cpp).
   bool compute_supported() const { return compute_supported_; }
   bool using_compute() const { return settings_.compute && compute_supported_; }
+  // A scene's features with auto's traversal (flat or BVH: accel/accel_choice.h), from its
+  // packing when given (else packed here when small): what set_scene compiles for it.
+  static Features scene_features(const Scene& scene, const PackedScene* packed = nullptr);
   bool using_flat() const { return with_settings(features_, settings_.mode).flat; }  // the program has no BVH traversal
+  // The features of the program `scene` gets with the current settings (no GL work).
+  Features program_features(const Scene& scene) const { return features_for(scene, settings_.mode); }
   const ShaderSource& integrator_source() const { return *source_; }
   double compile_ms() const { return integrator_ ? integrator_->compile_ms() : 0.0; }
   size_t programs_compiled() const { return programs_.size(); }

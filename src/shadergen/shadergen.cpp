@@ -30,7 +30,7 @@ Features Features::of(const Scene& scene) {
   for (const Material& m : scene.materials) f.material_features |= pt::material_features(m.params);
   for (int i : sampled_light_shapes(scene)) f.lights |= 1u << int(scene.shapes[size_t(i)].kind());
   for (const PunctualLight& l : scene.punctual) f.punctual |= 1u << int(l.kind());
-  f.flat = auto_flat(scene_primitives(scene));
+  // flat: left to the renderer, whose rule reads the scene's packed BVH (render/packing.h: accel_costs).
   return f;
 }
 

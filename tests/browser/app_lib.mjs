@@ -108,6 +108,8 @@ export async function openPage(context, url, errors) {
                              { timeout: 60000, polling: 200 });
   return page;
 }
+// The median (the mean of the middle two for an even count; NaN for none).
+export const median = (a) => { const s = [...a].sort((p, q) => p - q); return s.length ? (s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2) : NaN; };
 export const stats = (page) => page.evaluate(() => window.ptStats());
 export const until = (page, fn, arg, timeout = 60000) => page.waitForFunction(fn, arg, { timeout, polling: 50 });
 export const camOf = (s) => /cam=([^&]+)/.exec(s.view)[1];

@@ -21,7 +21,7 @@
 import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
-import { check, launcher, options, run, startServer } from "./app_lib.mjs";
+import { check, launcher, median, options, run, startServer } from "./app_lib.mjs";
 
 const { groups, webDir, outDir } = options("error_test.mjs", ["readout", "target", "cost", "denoise", "first"]);
 mkdirSync(outDir, { recursive: true });
@@ -40,7 +40,6 @@ async function openPage(context, url, errors) {
 const status = (page) => page.evaluate(() => window.ptLoadStatus());
 const until = (page, fn, arg, timeout = 120000) => page.waitForFunction(fn, arg, { timeout, polling: 100 });
 const sleep = (ms) => new Promise((ok) => setTimeout(ok, ms));
-const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
 
 const scene = "reference/scene2.xml";
 

@@ -1,0 +1,88 @@
+// What the page's frames cost its throughput (issue 17, "the page's per-frame cost"): the
+// page as users run it against the raw pass (&raw=ROWS: one draw of ROWS whole rows per
+// frame, no pacing, no panel, the image shown once a second), interleaved A B A B, in
+// headless Chromium (SwiftShader here; a GPU elsewhere). A measurement a person runs, not a
+// CI test.
+//
+//   NODE_PATH=/usr/share/nodejs node tools/page_cost.mjs [--web build/web] [--scene reference/scene2.xml]
+//        [--viewport 960x640] [--bounces 8] [--raw-rows 32] [--cycles 2] [--warmup 8] [--seconds 30]
+//
+// Per run: paths/s from the page's own count (ptLoadStatus().paths, every pixel sample of
+// every draw) over --seconds after --warmup, and the UI frame rate over the same window
+// (animation frames; in the raw pass one frame is one draw). Prints each run, the medians
+// and page / raw. Both without the coarse first image (&coarse=0), both unlimited.
+import { mkdtempSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join, resolve } from "node:path";
+import { checkWebBuild, launcher, median, openPage, repo, startServer } from "../tests/browser/app_lib.mjs";
+
+const opt = { web: "build/web", scene: "reference/scene2.xml", viewport: "960x640", bounces: "8", "raw-rows": "32",
+              cycles: "2", warmup: "8", seconds: "30" };
+for (let i = 2; i < process.argv.length; i += 2) {
+  const key = process.argv[i].replace(/^--/, "");
+  if (!(key in opt) || i + 1 >= process.argv.length) {
+    console.error(`usage: node tools/page_cost.mjs ${Object.keys(opt).map((k) => `[--${k} ${opt[k]}]`).join(" ")}`);
+    process.exit(2);
+  }
+  opt[key] = process.argv[i + 1];
+}
+const [vw, vh] = opt.viewport.split("x").map(Number);
+const webDir = resolve(repo, opt.web);
+
+// Paths and animation frames over `ms`, after the first full-resolution sample.
+async function measure(context, url, mode) {
+  const errors = [];
+  const page = await openPage(context, url, errors);
+  await page.waitForFunction(() => window.ptLoadStatus().samples >= 1 || window.ptLoadStatus().paths > 0, null,
+                             { timeout: 300000, polling: 100 });
+  await page.waitForTimeout(Number(opt.warmup) * 1000);
+  const r = await page.evaluate((ms) => new Promise((done) => {
+    const s0 = window.ptLoadStatus(), t0 = performance.now();
+    let frames = 0, worst = 0, last = t0;
+    const tick = () => {
+      const now = performance.now();
+      worst = Math.max(worst, now - last);
+      last = now;
+      frames++;
+      if (now - t0 < ms) return requestAnimationFrame(tick);
+      const s1 = window.ptLoadStatus();
+      done({ paths: s1.paths - s0.paths, ms: now - t0, frames, worst, samples: s1.samples });
+    };
+    requestAnimationFrame(tick);
+  }), Number(opt.seconds) * 1000);
+  const st = await page.evaluate(() => window.ptStats());
+  await page.close();
+  const out = { mode, pathsPerSecond: (r.paths * 1000) / r.ms, fps: (r.frames * 1000) / r.ms, worst: r.worst,
+                samples: r.samples, width: st.width, height: st.height, draw: st.bandRows ? `${st.bandRows} x ${st.bandColumns || st.width}` : "whole", errors };
+  console.log(`# ${mode}: ${out.pathsPerSecond.toFixed(0)} paths/s, ${out.fps.toFixed(1)} UI frames/s (worst frame ${out.worst.toFixed(0)} ms), ` +
+              `draws of ${mode === "raw" ? opt["raw-rows"] + " rows" : out.draw}, ${out.width}x${out.height}, ${out.samples} spp at the end` +
+              (errors.length ? `; errors: ${errors.join(" | ")}` : ""));
+  return out;
+}
+
+async function main() {
+  checkWebBuild(webDir);
+  const userDir = mkdtempSync(join(tmpdir(), "pt-chromium-"));
+  const server = await startServer([webDir, "0"]);
+  const runs = { page: [], raw: [] };
+  try {
+    const context = await launcher(userDir)({ viewport: { width: vw, height: vh } });
+    const base = `${server.url}?scene=${opt.scene}&bounces=${opt.bounces}&limit=0&coarse=0`;
+    console.log(`# ${new Date().toISOString()}: ${opt.scene}, viewport ${opt.viewport}, ${opt.bounces} bounces, ` +
+                `${opt.cycles} cycles of page then raw (${opt["raw-rows"]} rows a draw), ${opt.warmup} s warm-up, ${opt.seconds} s measured`);
+    for (let c = 0; c < Number(opt.cycles); ++c) {
+      runs.page.push(await measure(context, base, "page"));
+      runs.raw.push(await measure(context, `${base}&raw=${opt["raw-rows"]}`, "raw"));
+    }
+    await context.close();
+  } finally {
+    server.child.kill();
+    rmSync(userDir, { recursive: true, force: true });
+  }
+  const p = median(runs.page.map((r) => r.pathsPerSecond)), w = median(runs.raw.map((r) => r.pathsPerSecond));
+  const fps = median(runs.page.map((r) => r.fps));
+  console.log(`page ${p.toFixed(0)} paths/s at ${fps.toFixed(1)} UI frames/s; raw ${w.toFixed(0)} paths/s ` +
+              `(${median(runs.raw.map((r) => r.fps)).toFixed(1)} draws/s); page / raw ${(p / w).toFixed(2)} (goal: at least 0.8 at 30 UI frames/s)`);
+}
+
+await main();
