@@ -125,11 +125,14 @@ bool App::draw_panel_bar() {
                                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar);
   const std::string& path = scene_.path;
   const std::string name = path.substr(path.find_last_of('/') + 1);
+  // The label changes with every sample; its ID ("###" on) must not: a tap whose press
+  // and release frames straddle a new sample would otherwise press one button and
+  // release over another, and expand nothing (phone_test saw it after a drag's restart).
   char text[200];
   if (error_history_.empty())
-    std::snprintf(text, sizeof text, "+  %s  %d spp", name.c_str(), renderer_->samples());
+    std::snprintf(text, sizeof text, "+  %s  %d spp###bar", name.c_str(), renderer_->samples());
   else
-    std::snprintf(text, sizeof text, "+  %s  %d spp  relMSE %.3g", name.c_str(), renderer_->samples(), error_history_.back().rel_mse);
+    std::snprintf(text, sizeof text, "+  %s  %d spp  relMSE %.3g###bar", name.c_str(), renderer_->samples(), error_history_.back().rel_mse);
   if (ImGui::Button(text)) panel_collapsed_ = false;
   const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
   bar_rect_ = glm::vec4(p.x, p.y, s.x, s.y);

@@ -82,7 +82,9 @@ AppOptions page_options(int argc, char** argv) {
     }
     if (key == "--bounces") o.bounces = std::atoi(value.c_str());
     if (key == "--coarse") o.coarse = value != "0";
+    if (key == "--raw") o.raw_rows = std::max(0, std::atoi(value.c_str()));
     if (key == "--accel") accel_from_name(value.c_str(), &o.accel);  // auto, bvh or flat; else auto stays
+    if (key == "--gltfms") o.gltf_ms = value != "off";  // the glTF BSDF's energy compensation (default on)
     if (key == "--target") o.target_relmse = std::max(0.0f, std::strtof(value.c_str(), nullptr));
     ToneMap tm;
     if (key == "--tonemap" && tonemap_from_name(value.c_str(), &tm)) o.tonemap = tm;
@@ -132,6 +134,13 @@ EMSCRIPTEN_KEEPALIVE void pt_touch(int phase, int id, double x, double y, double
 // The panel's state and rectangles, the touch state (App::ui_json; ptUi()).
 EMSCRIPTEN_KEEPALIVE const char* pt_ui_json() {
   g_stats = g_app ? g_app->ui_json() : std::string("null");
+  if (g_app && g_stats.size() > 1) {  // and where the gestures went (web_touch.h)
+    const pt::web::TouchRoutes r = pt::web::touch_routes();
+    char j[128];
+    std::snprintf(j, sizeof j, ",\"routes\":{\"panel\":%d,\"image\":%d,\"last\":[%g,%g]}}", r.panel, r.image, double(r.x), double(r.y));
+    g_stats.pop_back();
+    g_stats += j;
+  }
   return g_stats.c_str();
 }
 

@@ -18,6 +18,7 @@ enum class Route { None, Panel, Image };
 Route g_route = Route::None;
 int g_panel_finger = -1;
 std::vector<int> g_fingers;  // down on the canvas now
+TouchRoutes g_routes;
 
 }  // namespace
 
@@ -30,6 +31,9 @@ void touch_event(App* app, TouchPhase phase, int id, float x, float y, double t_
     if (g_fingers.empty()) {
       g_route = imgui_window_at(x, y) ? Route::Panel : Route::Image;
       g_panel_finger = g_route == Route::Panel ? id : -1;
+      ++(g_route == Route::Panel ? g_routes.panel : g_routes.image);
+      g_routes.x = x;
+      g_routes.y = y;
     }
     g_fingers.push_back(id);
     if (g_route == Route::Panel && id == g_panel_finger) imgui_touch(x, y, true);
@@ -47,5 +51,7 @@ void touch_event(App* app, TouchPhase phase, int id, float x, float y, double t_
   if (ends) g_fingers.erase(known);
   if (g_fingers.empty()) g_route = Route::None;
 }
+
+TouchRoutes touch_routes() { return g_routes; }
 
 }  // namespace pt::web
