@@ -2,7 +2,10 @@
 // u_spp camera paths through its pixel and blends their mean into the running mean of
 // the previous pass (ping-pong). Unbiased: next-event estimation to emissive shapes,
 // combined with BSDF sampling by the power heuristic, and to punctual lights (delta: NEE
-// alone, weight 1); Russian roulette after 3 bounces.
+// alone, weight 1); Russian roulette after 3 bounces. With HAS_MEDIA the path knows the
+// absorbing medium it travels in (one level: a medium's surface that the path crosses
+// inwards sets it, outwards clears it; the camera is in air; materials/material.h
+// kMedium): every segment, shadow rays included, keeps exp(-sigma t) (Beer-Lambert).
 #include "camera_pass.glsl"
 
 vec3 trace_path(Ray r) {
@@ -11,8 +14,14 @@ vec3 trace_path(Ray r) {
   float prev_pdf = 0.0;
   bool prev_delta = true;
   vec3 prev_p = r.o;
+#ifdef HAS_MEDIA
+  vec3 sigma = vec3(0.0);  // the medium the path is in (the camera's: air)
+#endif
   for (int bounce = 0;; ++bounce) {
     Hit h = scene_intersect(r);
+#ifdef HAS_MEDIA
+    if (h.id >= 0) beta *= medium_transmittance(sigma, h.t);  // (a miss inside a medium: an open surface; left as is)
+#endif
     if (h.id < 0) {
       AUX_MISS(beta);
 #ifdef HAS_ENV_MAP
@@ -58,8 +67,14 @@ vec3 trace_path(Ray r) {
 #else
           float w = power_heuristic(ls.pdf, pdf_b);
 #endif
-          if (light_visible(p, n, ls.wi, ls.dist, ls.shape))
+          if (light_visible(p, n, ls.wi, ls.dist, ls.shape)) {
+#ifdef HAS_MEDIA
+            // A clear shadow ray crossed no surface: it stayed in this medium all the way
+            // (a ray from inside that would leave it meets the medium's surface: occluded).
+            f *= medium_transmittance(sigma, ls.dist);
+#endif
             L += beta * f * ls.radiance * (w / ls.pdf);
+          }
         }
       }
     }
@@ -71,6 +86,9 @@ vec3 trace_path(Ray r) {
     prev_p = p;
     vec3 wi = normalize(from_local(fr, bs.wi));
     if (!surface_sides_agree(sf, wi, bs.wi)) break;  // would cross the geometric surface
+#ifdef HAS_MEDIA
+    medium_cross(sigma, m, entering, n, wi);
+#endif
     r = Ray(offset_origin(p, n, wi), wi);
     if (bounce >= 3) {
       float q = min(max3(beta), 0.95);

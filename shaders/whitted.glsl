@@ -18,8 +18,14 @@
 //     sampled direction) that counts when its shadow ray leaves the scene.
 // Each delta or non-delta surface counts as one bounce; at the bounce limit the ray ends
 // (it carries nothing further). Emitters that are not light-sampled (planes) light
-// nothing directly. The estimate is the exact value of this model in expectation.
+// nothing directly. Inside an absorbing medium (HAS_MEDIA, media.glsl) each segment and
+// shadow ray keeps exp(-sigma t), as in the path tracer. The estimate is the exact value of this model in expectation.
 #include "camera_pass.glsl"
+#ifdef HAS_MEDIA
+#define WHITTED_MEDIUM(sigma, t) medium_transmittance(sigma, t)
+#else
+#define WHITTED_MEDIUM(sigma, t) 1.0
+#endif
 
 vec3 whitted_env(vec3 d) {
 #ifdef HAS_ENV_MAP
@@ -30,7 +36,7 @@ vec3 whitted_env(vec3 d) {
 }
 
 // Direct light reflected towards the viewer at p by the resolved non-delta surface sf.
-vec3 whitted_direct(Surface sf, vec3 p) {
+vec3 whitted_direct(Surface sf, vec3 p, vec3 sigma) {
   MaterialRec m = sf.m;
   Frame fr = sf.fr;
   vec3 n = sf.n, wo = sf.wo;
@@ -48,14 +54,14 @@ vec3 whitted_direct(Surface sf, vec3 p) {
       if (!punctual_sample(l, p, wi, dist, e)) continue;
       vec3 wl = to_local(fr, wi);
       vec3 f = surface_sides_agree(sf, wi, wl) ? material_eval(m, wo, wl, entering, pdf_b) : vec3(0.0);
-      if (max3(f) > 0.0 && light_visible(p, n, wi, dist, -1)) L += f * e;
+      if (max3(f) > 0.0 && light_visible(p, n, wi, dist, -1)) L += f * e * WHITTED_MEDIUM(sigma, dist);
       continue;
     }
 #endif
     if (!light_sample_shape(load_shape(l.shape), p, next4().xy, wi, pdf, dist) || !(pdf > 0.0)) continue;
     vec3 wl = to_local(fr, wi);
     vec3 f = surface_sides_agree(sf, wi, wl) ? material_eval(m, wo, wl, entering, pdf_b) : vec3(0.0);
-    if (max3(f) > 0.0 && light_visible(p, n, wi, dist, l.shape)) L += f * l.radiance / pdf;
+    if (max3(f) > 0.0 && light_visible(p, n, wi, dist, l.shape)) L += f * l.radiance / pdf * WHITTED_MEDIUM(sigma, dist);
   }
 #ifdef HAS_ENV_MAP
   vec3 wi, rad;
@@ -78,8 +84,10 @@ vec3 whitted_direct(Surface sf, vec3 p) {
 vec3 trace_path(Ray r) {
   vec3 L = vec3(0.0);
   vec3 beta = vec3(1.0);
+  vec3 sigma = vec3(0.0);  // the medium the ray is in (HAS_MEDIA; the camera's: air)
   for (int bounce = 0;; ++bounce) {
     Hit h = scene_intersect(r);
+    if (h.id >= 0) beta *= WHITTED_MEDIUM(sigma, h.t);
     if (h.id < 0) {
       L += beta * whitted_env(r.d);
       break;
@@ -91,7 +99,7 @@ vec3 trace_path(Ray r) {
     vec4 u = next4();  // xyz: delta lobe choice; w: a composite's child
     surface_resolve(sf, r, h, u.w);
     if (!material_is_delta(sf.m)) {
-      L += beta * whitted_direct(sf, h.p);
+      L += beta * whitted_direct(sf, h.p, sigma);
       break;
     }
     BsdfSample bs;
@@ -99,6 +107,9 @@ vec3 trace_path(Ray r) {
     beta *= bs.weight;
     vec3 wi = normalize(from_local(sf.fr, bs.wi));
     if (!surface_sides_agree(sf, wi, bs.wi)) break;  // would cross the geometric surface
+#ifdef HAS_MEDIA
+    medium_cross(sigma, sf.m, sf.entering, sf.n, wi);
+#endif
     r = Ray(offset_origin(h.p, sf.n, wi), wi);
   }
   return L;

@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2 or accel}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel or gltfms}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -130,6 +130,18 @@ case "$part" in
         if [[ -f "$w/$(basename "$s" .xml)-$k-flat.pfm" ]]; then
           cmp -s "$w/$(basename "$s" .xml)-$k-bvh.pfm" "$w/$(basename "$s" .xml)-$k-flat.pfm" && echo "16 spp: bvh and flat byte-identical" || echo "16 spp: bvh and flat DIFFER"
         fi
+      done
+    done
+    ;;
+  gltfms)
+    # The glTF BSDF's multiple-scattering compensation (issue 13, docs/gltf.md): each glTF
+    # scene at 1080p for GLTFMS_SECONDS (5) in both kernels, --gltf-ms on and off.
+    for s in ${GLTFMS_SCENES:-scenes/gltf/*.xml scenes/gltf-instances.xml}; do
+      for k in compute fragment; do
+        for ms in on off; do
+          echo "== $(basename "$s" .xml) $k gltf-ms $ms"
+          $B render "$s" --size $S --spp 100000 --seconds "${GLTFMS_SECONDS:-5}" --kernel $k --gltf-ms $ms --out /tmp/w.png | grep -E "shader|rendered|non-finite"
+        done
       done
     done
     ;;

@@ -62,6 +62,7 @@ struct MaterialTraits {
   bool image_maps;       // reads the scene's image maps
   bool emission_at_hit;  // defines emission_hit_<glsl>
   bool cuts_hits;        // defines hit_present_<glsl>
+  bool medium;           // defines medium_sigma_<glsl> (kMedium)
   // An element of the kind that loses no energy: in a white furnace it returns exactly 1
   // (the stem's kFurnace; nullptr for the kinds that absorb or, like single-scattering
   // GGX, lose energy). The furnace test loops over them.
@@ -70,7 +71,7 @@ struct MaterialTraits {
 
 inline constexpr MaterialTraits kMaterialTraits[] = {
 #define PT_X(e, g, x) {e::kExample, e::kFields, e::kNumFields, KindNeeds<e>::value, KindResolvesAtHit<e>::value, KindComposite<e>::value, KindHasChildren<e>::value, \
-   KindImageMaps<e>::value, KindEmissionAtHit<e>::value, KindCutsHits<e>::value, KindFurnace<e>::value},
+   KindImageMaps<e>::value, KindEmissionAtHit<e>::value, KindCutsHits<e>::value, KindMedium<e>::value, KindFurnace<e>::value},
     PT_MATERIAL_KINDS(PT_X)
 #undef PT_X
 };

@@ -18,7 +18,11 @@
 // varies over the surface) and kCutsHits (it defines hit_present_<glsl>(MaterialRec,
 // int prim, Ray, Hit): whether a candidate hit on a mesh triangle is a surface at all,
 // asked by the traversal itself so that every ray, shadow rays too, sees the same
-// surface; compiled only under HAS_HIT_CUTS, materials/features.h).
+// surface; compiled only under HAS_HIT_CUTS, materials/features.h) and kMedium (it
+// defines vec3 medium_sigma_<glsl>(MaterialRec): its surface bounds a homogeneous medium
+// of that absorption coefficient per unit length, which a path that crosses into it
+// travels in until it crosses out (Beer-Lambert; shaders/integrator.glsl); compiled only
+// under HAS_MEDIA, which a kind's features() reports where a material absorbs).
 #pragma once
 #include <cstring>
 #include <initializer_list>
@@ -114,6 +118,10 @@ template <class K, class = void>
 struct KindCutsHits : std::false_type {};
 template <class K>
 struct KindCutsHits<K, std::void_t<decltype(K::kCutsHits)>> : std::bool_constant<K::kCutsHits> {};
+template <class K, class = void>
+struct KindMedium : std::false_type {};
+template <class K>
+struct KindMedium<K, std::void_t<decltype(K::kMedium)>> : std::bool_constant<K::kMedium> {};
 template <class K, class = void>
 struct KindFurnace {
   static constexpr const char* value = nullptr;

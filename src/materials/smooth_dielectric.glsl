@@ -29,3 +29,6 @@ bool sample_smooth_dielectric(MaterialRec m, vec3 wo, bool entering, vec3 u, out
   }
   return true;
 }
+
+// The medium inside (kMedium): its absorption per unit length.
+vec3 medium_sigma_smooth_dielectric(MaterialRec m) { return smooth_dielectric_rec(m).sigma; }

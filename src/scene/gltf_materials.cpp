@@ -156,9 +156,20 @@ void Materials::read_lobes(const tinygltf::ExtensionMap& ext, const std::string&
   if (const tinygltf::Value* v = find("KHR_materials_transmission"))
     g.transmission_map = map(*v, "transmissionTexture", at + "/extensions/KHR_materials_transmission");
   // KHR_materials_volume: a volume (not a thin wall) where thicknessFactor > 0 (the
-  // extension's rule); its BSDF is not implemented (docs/gltf.md).
-  if (const tinygltf::Value* v = find("KHR_materials_volume"))
-    g.volume = number(*v, "thicknessFactor", 0.0f, 1e6f, at + "/extensions/KHR_materials_volume") > 0.0f;
+  // extension's rule), and its absorption (Beer-Lambert inside: attenuationColor is what
+  // is left after attenuationDistance). The thickness itself is a rasterizer's stand-in
+  // for the geometry, which a path tracer traces (docs/gltf.md).
+  if (const tinygltf::Value* v = find("KHR_materials_volume")) {
+    const std::string xat = at + "/extensions/KHR_materials_volume";
+    g.volume = number(*v, "thicknessFactor", 0.0f, 1e6f, xat) > 0.0f;
+    g.attenuation_color = color(*v, "attenuationColor", glm::vec3(1.0f), 1.0f, xat);
+    if (v->Has("attenuationDistance")) {
+      const tinygltf::Value& d = v->Get("attenuationDistance");
+      if (!d.IsNumber() || !(d.GetNumberAsDouble() > 0.0 && d.GetNumberAsDouble() <= 1e30))
+        r_.fail(xat + "/attenuationDistance", "must be a number > 0");
+      g.attenuation_distance = float(d.GetNumberAsDouble());
+    }
+  }
   if (const tinygltf::Value* v = find("KHR_materials_sheen")) {
     const std::string xat = at + "/extensions/KHR_materials_sheen";
     g.sheen_color = color(*v, "sheenColorFactor", glm::vec3(0.0f), 1.0f, xat);

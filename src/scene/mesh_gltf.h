@@ -3,6 +3,7 @@
 // one per mesh primitive per node, each with its node's world transform. A primitive used
 // by several nodes is one MeshData shared by all of them (instancing).
 #pragma once
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
@@ -47,6 +48,8 @@ struct GltfMaterial {
   float ior = 1.5f;           // KHR_materials_ior (0: Fresnel 1)
   float transmission = 0.0f;  // KHR_materials_transmission (thin-walled unless `volume`)
   bool volume = false;        // KHR_materials_volume with thicknessFactor > 0: not thin-walled
+  glm::vec3 attenuation_color{1.0f};  // KHR_materials_volume: what a path keeps of itself over
+  float attenuation_distance = INFINITY;  //   attenuationDistance inside (default: no absorption)
   int alpha_mode = 0;         // 0 OPAQUE, 1 MASK, 2 BLEND
   float alpha_cutoff = 0.5f;
   bool double_sided = false;

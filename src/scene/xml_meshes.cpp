@@ -78,10 +78,12 @@ int Loader::gltf_material(const GltfMaterial& g, XmlAttrs& a) {
   m.line = a.line();
   m.emission = g.emissive;  // with the base colour: both shade (docs/gltf.md)
   if (g.volume && g.transmission >= 0.5f) {
-    // KHR_materials_volume has no BSDF of its own yet: a stand-in smooth dielectric
-    // (thin-walled transmission is GltfPbr's: docs/gltf.md).
+    // KHR_materials_volume: a smooth dielectric with the volume's absorption inside (its
+    // rough refraction is not implemented yet: roughness and metallic are not used;
+    // thin-walled transmission is GltfPbr's: docs/gltf.md).
     m.tint = g.base_color;
-    m.params = SmoothDielectric{.ior = g.ior >= 1.0f ? g.ior : 1.5f};
+    m.params = SmoothDielectric{.ior = g.ior >= 1.0f ? g.ior : 1.5f,
+                                .sigma = SmoothDielectric::sigma_from(g.attenuation_color, g.attenuation_distance)};
     scene.materials.push_back(m);
     return int(scene.materials.size()) - 1;
   }

@@ -259,6 +259,14 @@ std::string generate_prelude(const Features& features) {
     g += "  return true;\n}\n";
   }
   g += "#include \"bvh.glsl\"\n";
+  if (f.has(MaterialFeature::Media)) {  // the media the path tracks (integrator.glsl): the kinds that bound one
+    g += "bool material_medium(MaterialRec m, out vec3 sigma) {\n";
+    for (int i = 0; i < kNumMaterialKinds; ++i)
+      if (f.has(MaterialKind(i)) && kMaterialTraits[i].medium)
+        g += "  if (m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") {\n    sigma = medium_sigma_" + kMaterialKinds[i].glsl +
+             "(m);\n    return true;\n  }\n";
+    g += "  sigma = vec3(0.0);\n  return false;\n}\n#include \"media.glsl\"\n";
+  }
   std::string delta = "bool material_is_delta(MaterialRec m) {\n";
   std::string eval = "vec3 material_eval(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf) {\n";
   std::string smp = "bool material_sample(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) {\n";
