@@ -306,6 +306,42 @@ def tests():
         g.write()
 
 
+def box(lo, hi):
+    """The closed box [lo, hi] (outward normals, counter-clockwise seen from outside)."""
+    p, n, uv, idx = [], [], [], []
+    for axis in range(3):
+        for side in (0, 1):
+            d = [0, 0, 0]
+            d[axis] = 1 if side else -1
+            u_axis, v_axis = (axis + 1) % 3, (axis + 2) % 3
+            if not side:
+                u_axis, v_axis = v_axis, u_axis
+            base = len(p)
+            for (a, b) in ((0, 0), (1, 0), (1, 1), (0, 1)):
+                q = [0.0, 0.0, 0.0]
+                q[axis] = hi[axis] if side else lo[axis]
+                q[u_axis] = hi[u_axis] if a else lo[u_axis]
+                q[v_axis] = hi[v_axis] if b else lo[v_axis]
+                p.append(tuple(q))
+                n.append(tuple(d))
+                uv.append((a, b))
+            idx += [base, base + 1, base + 2, base, base + 2, base + 3]
+    return p, n, uv, idx
+
+
+def volume_test():
+    """test-volume: KHR_materials_volume's absorption (tests/gltf_materials_test.cpp): a
+    closed slab [-1, 1]^2 x [-0.5, 0.5] of transmissive glass (ior 1.5, white, smooth) that
+    keeps (0.5, 0.8, 0.2) of the light over each unit length inside."""
+    g = Gltf("test-volume")
+    m = g.material({"pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1], "metallicFactor": 0, "roughnessFactor": 0},
+                    "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                                   "KHR_materials_volume": {"thicknessFactor": 1.0, "attenuationColor": [0.5, 0.8, 0.2],
+                                                            "attenuationDistance": 1.0}}})
+    g.node(g.mesh(*box((-1, -1, -0.5), (1, 1, 0.5)), m))
+    g.write()
+
+
 def punctual_lights():
     """KHR_lights_punctual: a grey floor and three spheres under a warm point light (with a
     range), a blue-white spot aimed down at the middle sphere and a dim directional light,
@@ -346,4 +382,5 @@ if __name__ == "__main__":
     showcase()
     lobes()
     tests()
+    volume_test()
     punctual_lights()
