@@ -73,12 +73,16 @@ Chi2Result direction_chi2(const DirectionCase& c, const char* name) {
   // A jump of the density (a light's silhouette, a bright texel of an environment map)
   // can hide between the midpoints of a cell: a cell is refined when its 3x3
   // neighbourhood is not uniform (its largest coarse value is over twice its smallest).
+  // The cells of the first and last rows all meet at a pole, so there every cell of the
+  // row is a neighbour (a density whose support ends near a pole, as a rough
+  // dielectric's refraction, can leave a sliver in a cell whose own neighbours are empty).
   std::vector<int> refine;
   for (int i = 0; i < int(all.size()); ++i) {
     const int ci = i / kPhiBins, pi = i % kPhiBins;
+    const int reach = ci == 0 || ci == kCosBins - 1 ? kPhiBins / 2 : 1;
     double lo = INFINITY, hi = 0.0;
     for (int dci = -1; dci <= 1; ++dci)
-      for (int dpi = -1; dpi <= 1; ++dpi) {
+      for (int dpi = -reach; dpi <= reach; ++dpi) {
         const int nc = ci + dci;
         if (nc < 0 || nc >= kCosBins) continue;
         const glm::dvec3& n = coarse[size_t(nc * kPhiBins + (pi + dpi + kPhiBins) % kPhiBins)];

@@ -39,7 +39,7 @@ Scene looking_down(float sky) {
 }
 
 Material glass(glm::vec3 attenuation) {
-  return SmoothDielectric{.ior = 1.5f, .sigma = SmoothDielectric::sigma_from(attenuation, 1.0f)};
+  return SmoothDielectric{.ior = 1.5f, .sigma = sigma_from(attenuation, 1.0f)};
 }
 
 // Each channel's mean over the image and its standard error from the spread between pixels.
@@ -107,7 +107,7 @@ TEST_CASE("media: attenuationColor and attenuationDistance load as an absorption
   REQUIRE(d);
   CHECK(d->sigma.x == Approx(std::log(2.0) / 2.0));
   CHECK(d->sigma.y == 0.0f);
-  CHECK(d->sigma.z == SmoothDielectric::kMaxSigma);  // nothing gets through, finite
+  CHECK(d->sigma.z == kMaxSigma);  // nothing gets through, finite
   CHECK(material_features(s.materials[0].params) == feature_bit(MaterialFeature::Media));
   CHECK(material_features(load("").materials[0].params) == 0u);  // clear glass: no medium code
   CHECK(material_features(load("attenuationColor=\"1 1 1\" attenuationDistance=\"1\"").materials[0].params) == 0u);

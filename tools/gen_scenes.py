@@ -89,8 +89,22 @@ def m_transmit(c):
     return '<Transmit outerIor="%s" innerIor="%s"/>' % (fmt(c.pick(1.0, c.ior())), fmt(c.ior()))
 
 
+def medium(c):
+    """An absorbing medium inside (half the time): a colour with zeros and ones, a distance
+    from 1e-6 to 1e6."""
+    if c.rng.random() < 0.5:
+        return ""
+    colour = [c.pick(0.0, 1.0, c.rng.random(), c.rng.random() ** 4) for _ in range(3)]
+    return ' attenuationColor="%s" attenuationDistance="%s"' % (vec(colour), fmt(c.logu(1e-6, 1e6)))
+
+
 def m_smooth_dielectric(c):
-    return '<SmoothDielectric ior="%s" color="%s"/>' % (fmt(c.ior()), vec(c.colour(0.5, 1.0)))
+    return '<SmoothDielectric ior="%s" color="%s"%s/>' % (fmt(c.ior()), vec(c.colour(0.5, 1.0)), medium(c))
+
+
+def m_rough_dielectric(c):
+    r = c.pick(0.0, 1.0, 0.0316, 0.03, c.rng.random(), c.rng.random() ** 3)
+    return '<RoughDielectric ior="%s" roughness="%s" color="%s"%s/>' % (fmt(c.ior()), fmt(r), vec(c.colour(0.5, 1.0)), medium(c))
 
 
 def m_emit(c):
@@ -172,6 +186,7 @@ MATERIALS = {
     "Textured": m_textured,
     "MetallicRoughness": m_metallic_roughness,
     "GltfPbr": m_gltf_pbr,
+    "RoughDielectric": m_rough_dielectric,
 }
 
 

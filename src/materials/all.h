@@ -23,6 +23,7 @@
 #include "materials/textured.h"
 #include "materials/metallic_roughness.h"
 #include "materials/gltf_pbr.h"
+#include "materials/rough_dielectric.h"
 
 namespace pt {
 

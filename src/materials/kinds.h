@@ -28,7 +28,8 @@
   X(FormulaPowTexture, formula_pow_texture, "FormulaPowTexture") \
   X(Textured, textured, "Textured")                          \
   X(MetallicRoughness, metallic_roughness, "MetallicRoughness") \
-  X(GltfPbr, gltf_pbr, "GltfPbr")
+  X(GltfPbr, gltf_pbr, "GltfPbr")                            \
+  X(RoughDielectric, rough_dielectric, "RoughDielectric")
 
 namespace pt {
 

@@ -78,12 +78,15 @@ int Loader::gltf_material(const GltfMaterial& g, XmlAttrs& a) {
   m.line = a.line();
   m.emission = g.emissive;  // with the base colour: both shade (docs/gltf.md)
   if (g.volume && g.transmission >= 0.5f) {
-    // KHR_materials_volume: a smooth dielectric with the volume's absorption inside (its
-    // rough refraction is not implemented yet: roughness and metallic are not used;
-    // thin-walled transmission is GltfPbr's: docs/gltf.md).
+    // KHR_materials_volume: a dielectric of the material's ior and roughness, tinted by the
+    // base colour, with the volume's absorption inside: smooth below roughness 0.03 (as the
+    // glTF BSDF's lobes), else GGX (RoughDielectric). Metallic, maps and the other lobes
+    // are not used (thin-walled transmission is GltfPbr's: docs/gltf.md).
     m.tint = g.base_color;
-    m.params = SmoothDielectric{.ior = g.ior >= 1.0f ? g.ior : 1.5f,
-                                .sigma = SmoothDielectric::sigma_from(g.attenuation_color, g.attenuation_distance)};
+    const float ior = g.ior >= 1.0f ? g.ior : 1.5f;
+    const glm::vec3 sigma = sigma_from(g.attenuation_color, g.attenuation_distance);
+    if (g.roughness < 0.03f) m.params = SmoothDielectric{.ior = ior, .sigma = sigma};
+    else m.params = RoughDielectric{.ior = ior, .roughness = g.roughness, .sigma = sigma};
     scene.materials.push_back(m);
     return int(scene.materials.size()) - 1;
   }
