@@ -19,7 +19,7 @@
 
 #include "gl_context.h"
 #include "scene/xml_loader.h"
-#include "scene_builders.h"
+#include "media_scenes.h"
 #include "test_paths.h"
 
 using namespace pt;
@@ -27,16 +27,6 @@ using namespace pt;
 namespace {
 
 constexpr int kN = 16;
-constexpr double kF = 0.04;  // ((1.5 - 1) / (1.5 + 1))^2
-const glm::vec3 kAttenuation(0.5f, 0.8f, 0.2f);  // per unit length (attenuationDistance 1)
-
-Scene looking_down(float sky) {
-  Scene s;
-  s.camera = camera_looking_down_z(glm::vec3(0.0f, 0.0f, 10.0f));
-  s.camera.fov_y = 0.2f;
-  s.environment.color = glm::vec3(sky);
-  return s;
-}
 
 Material glass(glm::vec3 attenuation) {
   return SmoothDielectric{.ior = 1.5f, .sigma = sigma_from(attenuation, 1.0f)};
@@ -64,17 +54,13 @@ void check_channels(const RenderResult& r, const glm::dvec3& expect, const char*
 TEST_CASE("media: an absorbing glass slab returns R + T of its closed form (Beer-Lambert, every internal reflection)", "[gpu][transport][media]") {
   test_gl();
   for (RenderMode mode : {RenderMode::PathTracer, RenderMode::Whitted}) {
-    Scene s = looking_down(1.0f);
-    add_box(s, {-20.0f, -20.0f, -0.5f}, {20.0f, 20.0f, 0.5f}, add_material(s, glass(kAttenuation)));
+    const Scene s = slab_scene(glass(kAttenuation));
     RenderSettings st;
     st.mode = mode;
     st.max_bounces = 16;
     const RenderResult r = render_scene(s, kN, kN, 1024, st);
     glm::dvec3 expect;
-    for (int c = 0; c < 3; ++c) {
-      const double a = kAttenuation[c], k = 1.0 - kF * kF * a * a;
-      expect[c] = (1 - kF) * (1 - kF) * a / k + kF + (1 - kF) * (1 - kF) * kF * a * a / k;
-    }
+    for (int c = 0; c < 3; ++c) expect[c] = slab_returned(kAttenuation[c]);
     check_channels(r, expect, mode == RenderMode::PathTracer ? "slab, path" : "slab, whitted");
   }
 }
@@ -82,16 +68,12 @@ TEST_CASE("media: an absorbing glass slab returns R + T of its closed form (Beer
 TEST_CASE("media: an emitter inside absorbing glass is seen through exp(-sigma L) of it, the segment ending on the emitter", "[gpu][transport][media]") {
   test_gl();
   for (RenderMode mode : {RenderMode::PathTracer, RenderMode::Whitted}) {
-    Scene s = looking_down(0.0f);
-    add_box(s, {-20.0f, -20.0f, -3.0f}, {20.0f, 20.0f, 1.0f}, add_material(s, glass(kAttenuation)));
-    Material lamp = Emit{};
-    lamp.emission = glm::vec3(2.0f);
-    add_box(s, {-19.0f, -19.0f, -1.0f}, {19.0f, 19.0f, -0.5f}, add_material(s, lamp));  // its face at z = -0.5: L = 1.5
+    const Scene s = emitter_scene(glass(kAttenuation));  // the lamp's face at depth L = 1.5
     RenderSettings st;
     st.mode = mode;
     const RenderResult r = render_scene(s, kN, kN, 256, st);
     glm::dvec3 expect;
-    for (int c = 0; c < 3; ++c) expect[c] = 2.0 * (1 - kF) * std::pow(double(kAttenuation[c]), 1.5) / 2.25;
+    for (int c = 0; c < 3; ++c) expect[c] = emitter_seen(2.0, std::pow(double(kAttenuation[c]), 1.5));
     check_channels(r, expect, mode == RenderMode::PathTracer ? "emitter inside, path" : "emitter inside, whitted");
   }
 }

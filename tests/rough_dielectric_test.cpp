@@ -14,7 +14,7 @@
 #include "direction_chi2.h"
 #include "gl_context.h"
 #include "glsl_harness.h"
-#include "scene_builders.h"
+#include "media_scenes.h"
 
 using namespace pt;
 
@@ -78,25 +78,17 @@ TEST_CASE("RoughDielectric: a white furnace returns at most 1, nearly 1 when nea
 
 TEST_CASE("RoughDielectric: a nearly smooth absorbing slab matches the smooth closed form", "[gpu][transport][media]") {
   test_gl();
-  Scene s;
-  s.camera = camera_looking_down_z(glm::vec3(0.0f, 0.0f, 10.0f));
-  s.camera.fov_y = 0.2f;
-  s.environment.color = glm::vec3(1.0f);
-  const glm::vec3 att(0.5f, 0.8f, 0.2f);
-  add_box(s, {-20.0f, -20.0f, -0.5f}, {20.0f, 20.0f, 0.5f}, add_material(s, rough(0.04f, sigma_from(att, 1.0f))));
   RenderSettings st;
   st.max_bounces = 16;
-  const RenderResult r = render_scene(s, 16, 16, 1024, st);
+  const RenderResult r = render_scene(slab_scene(rough(0.04f, sigma_from(kAttenuation, 1.0f))), 16, 16, 1024, st);
   CHECK(r.counters.bad_samples == 0);
-  const double f = 0.04;
+  const glm::dvec3 mean = image_mean(r);
   for (int c = 0; c < 3; ++c) {
-    double sum = 0.0;
-    for (int i = 0; i < 16 * 16; ++i) sum += r.rgba[size_t(i) * 4 + c];
-    const double a = att[c], k = 1.0 - f * f * a * a, expect = (1 - f) * (1 - f) * a / k + f + (1 - f) * (1 - f) * f * a * a / k;
-    std::printf("rough slab (roughness 0.04), channel %d: %.5f, smooth closed form %.5f\n", c, sum / 256.0, expect);
+    const double expect = slab_returned(kAttenuation[c]);
+    std::printf("rough slab (roughness 0.04), channel %d: %.5f, smooth closed form %.5f\n", c, mean[c], expect);
     // Microfacets tilt the paths inside (a longer way through, other Fresnel factors):
     // within 1% of the smooth value at this roughness.
-    CHECK(sum / 256.0 == Approx(expect).epsilon(0.01));
+    CHECK(mean[c] == Approx(expect).epsilon(0.01));
   }
 }
 
@@ -105,22 +97,12 @@ TEST_CASE("RoughDielectric: a nearly smooth absorbing slab matches the smooth cl
 // front face, is Le (1 - F) exp(-sigma L) / n^2 as for the smooth kind (media_test.cpp).
 TEST_CASE("RoughDielectric: an emitter inside it is seen through (1 - F) exp(-sigma L) / n^2", "[gpu][transport][media]") {
   test_gl();
-  Scene s;
-  s.camera = camera_looking_down_z(glm::vec3(0.0f, 0.0f, 10.0f));
-  s.camera.fov_y = 0.2f;
-  s.environment.color = glm::vec3(0.0f);
-  const glm::vec3 att(0.5f, 0.8f, 0.2f);
-  add_box(s, {-20.0f, -20.0f, -3.0f}, {20.0f, 20.0f, 1.0f}, add_material(s, rough(0.04f, sigma_from(att, 1.0f))));
-  Material lamp = Emit{};
-  lamp.emission = glm::vec3(2.0f);
-  add_box(s, {-19.0f, -19.0f, -1.0f}, {19.0f, 19.0f, -0.5f}, add_material(s, lamp));
-  const RenderResult r = render_scene(s, 16, 16, 256);
+  const RenderResult r = render_scene(emitter_scene(rough(0.04f, sigma_from(kAttenuation, 1.0f))), 16, 16, 256);
   CHECK(r.counters.bad_samples == 0);
+  const glm::dvec3 mean = image_mean(r);
   for (int c = 0; c < 3; ++c) {
-    double sum = 0.0;
-    for (int i = 0; i < 16 * 16; ++i) sum += r.rgba[size_t(i) * 4 + c];
-    const double expect = 2.0 * (1 - 0.04) * std::pow(double(att[c]), 1.5) / 2.25;
-    std::printf("emitter inside rough glass (roughness 0.04), channel %d: %.5f, smooth closed form %.5f\n", c, sum / 256.0, expect);
-    CHECK(sum / 256.0 == Approx(expect).epsilon(0.01));
+    const double expect = emitter_seen(2.0, std::pow(double(kAttenuation[c]), 1.5));
+    std::printf("emitter inside rough glass (roughness 0.04), channel %d: %.5f, smooth closed form %.5f\n", c, mean[c], expect);
+    CHECK(mean[c] == Approx(expect).epsilon(0.01));
   }
 }
