@@ -270,10 +270,15 @@ async function main() {
     const failedScenes = [];
     for (const name of seedScenes) {
       await page.evaluate(() => window.ptSetLimit(0));
+      // Loads finished so far: the page may already show this scene with samples from
+      // before (scene0 is the one on screen when the loop starts), so wait for this load.
+      const loadsBefore = await page.evaluate(() => window.ptLoadStatus().loads);
       const ok = await page.evaluate((p) => window.ptLoadScene(p), `/scenes/${name}`);
       await page.evaluate((n) => window.ptSetLimit(n), sspp);
-      await page.waitForFunction(([p, n]) => { const s = window.ptStats(); return s.scene.endsWith(p) && s.samples >= n; },
-                                 [name, sspp], { timeout: 120000, polling: 100 });
+      await page.waitForFunction(([p, n, l, w, h]) => {
+        const s = window.ptStats();
+        return s.loads > l && !s.loading && s.scene.endsWith(p) && s.width === w && s.height === h && s.samples >= n;
+      }, [name, sspp, loadsBefore, sw, sh], { timeout: 120000, polling: 100 });
       const st = await stats(page);
       await page.screenshot({ path: join(outDir, `seed-${name.replace(/[/.]/g, "-")}.png`) });
       const nat = nativeRender(join(outDir, `seed-${name.replace(/[/.]/g, "-")}-native.png`), name, sw, sh, sspp);
