@@ -178,6 +178,19 @@ class App {
   double total_samples_ = 0;
   double samples_per_second_ = 0.0;
   double restart_ms_ = 0.0, done_ms_ = -1.0;
+  // What the panel's live readouts (samples/s, elapsed, time to the target) show: taken
+  // kRefreshMs apart, and at once when the sample count or the run's state changes. Taken
+  // every frame, they changed the panel every frame, and a changed panel is a whole
+  // present (the image's display pass, then the panel: src/platform/web.cpp), which with
+  // a software GPU cost more than the draws (issue 17; load_test's frame rate).
+  struct Readout {
+    double ms = -1e30;  // when taken (the frame's clock), and the clock the readouts use
+    double samples_per_second = 0.0;
+    int samples = -1;
+    bool done = false;
+  };
+  Readout readout_;
+  void take_readout();
 
   // The estimated error (issue 14; app_stats.cpp, the panel's part in app_panel.cpp): the
   // renderer's estimate of the image's relMSE (three float images read back), taken at

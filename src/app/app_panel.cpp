@@ -110,6 +110,13 @@ void App::draw_scene_controls() {
   if (edited) scene_edited(moved ? scene_.lights[0].shape : -1);
 }
 
+void App::take_readout() {
+  const int n = renderer_->samples();
+  const bool done = done_ms_ >= 0;
+  if (last_frame_ms_ - readout_.ms < kRefreshMs && n == readout_.samples && done == readout_.done) return;
+  readout_ = {last_frame_ms_, samples_per_second_, n, done};
+}
+
 void App::draw_panel() {
   const std::string& root = options_.scene_root;
   const auto label = [&](const std::string& path) {
@@ -184,12 +191,13 @@ void App::draw_panel() {
   }
 
   ImGui::Separator();
-  const double end_ms = done_ms_ >= 0 ? done_ms_ : last_frame_ms_;
+  take_readout();
+  const double end_ms = done_ms_ >= 0 ? done_ms_ : readout_.ms;
   if (settings_.sample_limit > 0)
     ImGui::Text("samples    %d / %d", renderer_->samples(), settings_.sample_limit);
   else
     ImGui::Text("samples    %d", renderer_->samples());
-  ImGui::Text("samples/s  %.1f", samples_per_second_);
+  ImGui::Text("samples/s  %.1f", readout_.samples_per_second);
   ImGui::Text("elapsed    %.1f s", std::max(0.0, end_ms - restart_ms_) * 1e-3);
   // Until the first full-resolution sweep is complete the image shown is a coarse level
   // (render/coarse.h), said on this row (the rows below keep their places).
@@ -273,7 +281,7 @@ void App::draw_error() {
   } else if (trend && b < -0.05) {
     // The fitted line reaches the target at 10^((log10 target - a) / b) seconds.
     const double t = std::pow(10.0, (std::log10(double(target_relmse_)) - a) / b);
-    const double left = t - std::max(0.0, last_frame_ms_ - restart_ms_) * 1e-3;
+    const double left = t - std::max(0.0, readout_.ms - restart_ms_) * 1e-3;
     ImGui::Text("to target  ~%.1f s (slope %.2f)", std::max(0.0, left), b);
   } else {
     ImGui::TextUnformatted("to target  (estimating the trend)");

@@ -17,7 +17,7 @@ constexpr double kTargetFrameMs = 22.0;
 constexpr double kCpuBudgetMs = 12.0;
 constexpr int kMaxPassesPerFrame = 64;
 // When even one draw per frame keeps frames slower than kSlowDrawFrameMs (under 30 UI
-// frames/s: two frames in a row, or one twice as slow) the draw shrinks: rows first, then
+// frames/s: the mean of the window below, or two frames in a row twice as slow) the draw shrinks: rows first, then
 // columns, down to kMinBandRows x min_band_columns(). It grows back while frames are
 // faster than kGrowDrawFrameMs: columns to the whole width, then rows to the whole image,
 // then more draws per frame. Growth is gentle unless frames are fast: a software GL spends
@@ -32,9 +32,13 @@ constexpr int kMinBandColumns = 128;
 // Nor are draws smaller than a sweep over this many draws (a bigger canvas, bigger draws):
 // at 30 frames/s a sweep then takes at most about 35 s.
 constexpr int kMaxDrawsPerSweep = 1024;
-// The interval between frames answers a change of the draw size a frame or two late
-// (the browser runs that far ahead of the GPU): no second change before then.
-constexpr int kDrawSettleFrames = 2;
+// The draw size follows the mean interval of the last kJudgeFrames frames drawn at that
+// size (pacing.h; none from before a change: the browser runs a frame or two ahead of the
+// GPU). Not one frame nor the shorter of two: a browser catching up after a long frame
+// delivers the next at once, so intervals come in pairs like 50 + 5 ms (SwiftShader on 2
+// cores, CI's load_test), where the shorter said "fast" and the draw grew while frames
+// averaged 28/s. Two frames in a row far too slow (over 2 kSlowDrawFrameMs) shrink the
+// draw at once, without waiting for the window.
 // How long a floor under the draw size (judge_shrink) holds before shrinking is tried again.
 constexpr double kDrawFloorMs = 5000.0;
 
@@ -82,7 +86,9 @@ void FramePacer::scale_draw(double factor, int w, int h, RenderSettings& s) {
                               : std::clamp(int(pixels / kMinBandRows), min_band_columns(w, h), w);
   s.band_rows = new_rows >= h ? 0 : new_rows;
   s.band_columns = new_columns >= w ? 0 : new_columns;
-  draw_settle_ = kDrawSettleFrames;
+  judged_ = -1;  // the next interval is of a frame queued before the change: not counted
+  window_sum_ = 0.0;
+  prev_dt_ms_ = 0.0;
 }
 
 // Frames still slow after a shrink from shrink_from_pixels_ (frames then
@@ -121,21 +127,36 @@ int FramePacer::frame(Renderer& r, RenderSettings& s, double dt_ms, double now_m
   const bool smallest = s.band_rows == std::min(kMinBandRows, h) &&
                         s.band_columns == (min_band_columns(w, h) < w ? min_band_columns(w, h) : 0);
   const double pixels = double(s.band_rows > 0 ? std::min(s.band_rows, h) : h) * (s.band_columns > 0 ? std::min(s.band_columns, w) : w);
-  const bool settled = draw_settle_ == 0;
-  if (draw_settle_ > 0) --draw_settle_;
-  // The draw size follows two frames, not one: a browser catching up after a long frame
-  // delivers the next one at once (short), and a single slow frame may be a hiccup.
-  const double slower = std::max(dt_ms, prev_dt_ms_), faster = std::min(dt_ms, prev_dt_ms_);
-  prev_dt_ms_ = dt_ms;
-  if (dt_ms > kSlowFrameMs && !busy && settled) {  // frames slowed by a preparation say nothing of the draws
-    if (passes_per_frame_ > 1) {
-      passes_per_frame_ = std::max(1, int(std::min(0.9, kTargetFrameMs / dt_ms) * passes_per_frame_));
-    } else if (dt_ms > 2.0 * kSlowDrawFrameMs) {  // far too slow: the draw, surely; shrink at once
-      shrink_from_pixels_ = 0.0;
-      if (!smallest) scale_draw(std::min(0.5, kTargetFrameMs / dt_ms), w, h, s);
-    } else if (faster > kSlowDrawFrameMs && !judge_shrink(pixels, faster, now_ms, smallest, w, h, s) && !smallest && pixels > floor_pixels_) {
+  // The window: the intervals of frames at this draw size; frames slowed by a preparation
+  // say nothing of the draws, and a sweep that ended (a converged image) none either.
+  const bool skipped = judged_ < 0 && !busy && dt_ms > 0.0;  // the frame queued before a change
+  if (busy || dt_ms <= 0.0) {
+    judged_ = 0;
+    window_sum_ = 0.0;
+  } else if (skipped) {
+    judged_ = 0;
+  } else if (judged_ < kJudgeFrames) {
+    window_[judged_++] = dt_ms;
+    window_sum_ += dt_ms;
+  } else {
+    window_sum_ += dt_ms - window_[next_];
+    window_[next_] = dt_ms;
+    next_ = (next_ + 1) % kJudgeFrames;
+  }
+  if (judged_ < kJudgeFrames) next_ = 0;  // (filling: the ring starts at the oldest)
+  const bool settled = judged_ == kJudgeFrames;
+  const double mean = settled ? window_sum_ / kJudgeFrames : 0.0;
+  const double both = busy ? 0.0 : std::min(dt_ms, prev_dt_ms_);  // the faster of this frame and the last
+  prev_dt_ms_ = busy || skipped ? 0.0 : dt_ms;
+  if (dt_ms > kSlowFrameMs && !busy && passes_per_frame_ > 1) {  // more draws than one: fewer, at once
+    passes_per_frame_ = std::max(1, int(std::min(0.9, kTargetFrameMs / dt_ms) * passes_per_frame_));
+  } else if (passes_per_frame_ == 1 && (both > 2.0 * kSlowDrawFrameMs || (settled && mean > 2.0 * kSlowDrawFrameMs))) {
+    shrink_from_pixels_ = 0.0;  // far too slow: the draw, surely; shrink at once
+    if (!smallest) scale_draw(std::min(0.5, kTargetFrameMs / std::max(both, mean)), w, h, s);
+  } else if (settled && passes_per_frame_ == 1) {
+    if (mean > kSlowDrawFrameMs && !judge_shrink(pixels, mean, now_ms, smallest, w, h, s) && !smallest && pixels > floor_pixels_) {
       shrink_from_pixels_ = pixels;
-      shrink_from_ms_ = faster;
+      shrink_from_ms_ = mean;
       scale_draw(0.7, w, h, s);
     }
   }
@@ -155,12 +176,16 @@ int FramePacer::frame(Renderer& r, RenderSettings& s, double dt_ms, double now_m
     ++done;
     if (ms_since(t0) > kCpuBudgetMs) break;
   }
+  if (done == 0) {  // frames without draws say nothing of them
+    judged_ = 0;
+    window_sum_ = 0.0;
+  }
   // Grow only when this frame used all its passes, else an idle (converged) image would
   // ratchet the count up and the next restart would start with one very long frame.
-  if (dt_ms > 0 && done == passes_per_frame_ && !busy && settled) {
-    if (!whole && slower < kGrowDrawFrameMs) {
+  if (dt_ms > 0 && done == passes_per_frame_ && !busy) {
+    if (!whole && settled && mean < kGrowDrawFrameMs) {
       shrink_from_pixels_ = probe_from_pixels_ = 0.0;  // a shrink (or a probe) that let frames get fast did its job
-      scale_draw(slower < kFastFrameMs ? 2.0 : 1.25, w, h, s);
+      scale_draw(mean < kFastFrameMs ? 2.0 : 1.25, w, h, s);
     } else if (whole && dt_ms < kFastFrameMs) {
       passes_per_frame_ = std::min(kMaxPassesPerFrame, passes_per_frame_ + 1);
     }

@@ -71,6 +71,7 @@ class FramePacer {
   // draw's samples to `samples`, in fractions of the image, and returns the draws made.
   int frame(Renderer& r, RenderSettings& s, double dt_ms, double now_ms, bool busy, double& samples);
   int passes_per_frame() const { return passes_per_frame_; }
+  static constexpr int kJudgeFrames = 6;  // frame intervals averaged per judgement of the draw size (pacing.cpp)
 
  private:
   int min_band_columns(int w, int h) const;
@@ -78,8 +79,12 @@ class FramePacer {
   bool judge_shrink(double pixels, double ms, double now_ms, bool smallest, int w, int h, RenderSettings& s);
 
   int passes_per_frame_ = 1;
-  int draw_settle_ = 0;      // frames before the draw size may change again
-  double prev_dt_ms_ = 0.0;  // the interval before the last one
+  // The intervals of the last frames at the current draw size (pacing.cpp, kJudgeFrames):
+  // judged_ of them so far, a ring from next_ once full.
+  double window_[kJudgeFrames] = {};
+  double window_sum_ = 0.0;
+  int judged_ = 0, next_ = 0;
+  double prev_dt_ms_ = 0.0;  // the interval before this one (since the last change)
   double shrink_from_pixels_ = 0.0, shrink_from_ms_ = 0.0;  // the last shrink: draw size and frame time before it
   double floor_pixels_ = 0.0, floor_set_ms_ = -1e9;  // no shrink below this, for a while (judge_shrink)
   double probe_from_pixels_ = 0.0;  // at the smallest draw to measure it: the size to go back to (judge_shrink)

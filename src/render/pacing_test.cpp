@@ -2,10 +2,14 @@
 // cheap rows give whole sweeps of several samples (at most 256), dear rows bands of one
 // sample (at least 4 rows); the worst recent cost is kept, slowly forgotten. FramePacer,
 // fed frame intervals: draws per frame grow while frames are fast and scale down when one
-// is slow; with one draw per frame a far too slow frame shrinks the draw at once, two slow
-// frames by 0.7, never below 4 rows x the narrowest tile, with two frames' settling
-// between changes; fast frames grow it back to the whole image; a shrink that leaves frames
-// as slow is undone and not tried again for 5 s; a preparation gets one draw per frame.
+// is slow; with one draw per frame two far too slow frames in a row shrink the draw at
+// once, a window of six slow frames (their mean: catch-up pairs of a long and a short
+// interval count as what they are) by 0.7, never below 4 rows x the narrowest tile, the
+// frame queued before a change not counted; fast frames grow it back to the whole image; a
+// shrink that leaves frames as slow is undone and not tried again for 5 s; a preparation
+// gets one draw per frame.
+#include <algorithm>
+
 #include <catch2/catch.hpp>
 
 #include "gl_context.h"
@@ -61,6 +65,16 @@ int frames(FramePacer& p, Renderer& r, RenderSettings& s, int n, double dt, doub
 
 }  // namespace
 
+// Frames of `dt` ms until the draw size changes (at most `limit`); returns how many.
+int until_change(FramePacer& p, Renderer& r, RenderSettings& s, double dt, double& now, int limit = 100) {
+  const int rows = s.band_rows, columns = s.band_columns;
+  for (int i = 1; i <= limit; ++i) {
+    frames(p, r, s, 1, dt, now);
+    if (s.band_rows != rows || s.band_columns != columns) return i;
+  }
+  return -1;
+}
+
 TEST_CASE("FramePacer follows the interval between frames", "[gpu][pacing]") {
   test_gl();
   Renderer r;  // no scene: the draws cost nothing, so only the intervals fed here count
@@ -80,12 +94,11 @@ TEST_CASE("FramePacer follows the interval between frames", "[gpu][pacing]") {
   frames(p, r, s, 2, 100.0, now);
   CHECK(p.passes_per_frame() == 1);
   CHECK(s.band_rows == 0);
-  frames(p, r, s, 1, 100.0, now);  // far too slow with one draw: the draw shrinks at once
+  frames(p, r, s, 1, 100.0, now);  // far too slow with one draw, two frames in a row: the draw shrinks at once
   CHECK(s.band_rows == 28);        // 0.22 of the image, whole rows
   CHECK(s.band_columns == 0);
-  frames(p, r, s, 2, 100.0, now);  // two frames to settle
-  CHECK(s.band_rows == 28);
-  frames(p, r, s, 1, 100.0, now);
+  // The frame queued before the change is not counted; then two in a row.
+  CHECK(until_change(p, r, s, 100.0, now) == 3);
   CHECK(s.band_rows == 6);
   frames(p, r, s, 60, 100.0, now);
   CHECK(s.band_rows == 4);  // the floor: 4 rows of the narrowest tile
@@ -111,19 +124,36 @@ struct SlowFrames {
   double now = 0.0;
 };
 
+TEST_CASE_METHOD(SlowFrames, "FramePacer judges the mean interval of six frames, not the faster of two", "[gpu][pacing]") {
+  // A browser catching up after a long frame delivers the next at once: pairs of 62 and
+  // 10 ms are 27.8 frames/s. The faster of two said "fast" (CI's load_test: the draw
+  // stayed at 16 rows at 28.7 UI frames/s); the mean says slow.
+  s.band_rows = 32;
+  for (int i = 0; i < 3; ++i) frames(p, r, s, 1, 62.0, now), frames(p, r, s, 1, 10.0, now);
+  CHECK(s.band_rows == 22);  // 0.7 x 32 after the first six
+  int largest = 0;
+  for (int i = 0; i < 50; ++i) {
+    frames(p, r, s, 1, 62.0, now), frames(p, r, s, 1, 10.0, now);
+    largest = std::max(largest, s.band_rows);
+  }
+  CHECK(largest == 32);  // never grew: the probe, then its floor (intervals fed here do not follow the draw)
+  // Pairs of 40 and 4 ms are 45 frames/s: the draw grows.
+  RenderSettings t;
+  t.band_rows = 32;
+  FramePacer q;
+  double samples = 0.0;
+  q.frame(r, t, 0.0, now, false, samples);
+  for (int i = 0; i < 4; ++i) frames(q, r, t, 1, 40.0, now), frames(q, r, t, 1, 4.0, now);
+  CHECK(t.band_rows == 40);  // 1.25 x 32
+}
+
 TEST_CASE_METHOD(SlowFrames, "FramePacer undoes a shrink that leaves frames as slow, for 5 s", "[gpu][pacing]") {
-  frames(p, r, s, 1, 40.0, now);
-  CHECK(s.band_rows == 0);  // one slow frame may be a hiccup
-  frames(p, r, s, 1, 40.0, now);
-  CHECK(s.band_rows == 89);  // two: the draw shrinks by 0.7
-  frames(p, r, s, 2, 40.0, now);
-  CHECK(s.band_rows == 89);  // settling
-  frames(p, r, s, 1, 40.0, now);
+  CHECK(until_change(p, r, s, 40.0, now) == 6);  // one window of slow frames (a few slow ones may be hiccups)
+  CHECK(s.band_rows == 89);  // the draw shrinks by 0.7
+  CHECK(until_change(p, r, s, 40.0, now) == 7);  // the frame queued before the change, then a window
   CHECK(s.band_rows == 4);  // as slow as before: the smallest draw is measured (the probe)
   CHECK(s.band_columns == 128);
-  frames(p, r, s, 2, 40.0, now);
-  CHECK(s.band_rows == 4);  // settling
-  frames(p, r, s, 1, 40.0, now);
+  CHECK(until_change(p, r, s, 40.0, now) == 7);
   CHECK(s.band_rows == 0);  // as slow at the smallest draw: the frame's fixed cost, not the draw; undone
   CHECK(s.band_columns == 0);
   const double floor_from = now;
@@ -137,14 +167,14 @@ TEST_CASE_METHOD(SlowFrames, "FramePacer undoes a shrink that leaves frames as s
 }
 
 TEST_CASE_METHOD(SlowFrames, "FramePacer keeps a probe's small draw when frames there are fast", "[gpu][pacing]") {
-  frames(p, r, s, 2, 40.0, now);
+  until_change(p, r, s, 40.0, now);
   CHECK(s.band_rows == 89);  // slow: the draw shrinks by 0.7
-  frames(p, r, s, 3, 40.0, now);
+  until_change(p, r, s, 40.0, now);
   CHECK(s.band_rows == 4);  // as slow: the probe
-  frames(p, r, s, 3, 25.0, now);
+  CHECK(until_change(p, r, s, 25.0, now) == 7);
   CHECK(s.band_rows == 4);  // the smallest draw gives fast frames: no floor, growth
   CHECK(s.band_columns == 160);  // 1.25 x 128
-  frames(p, r, s, 3, 36.0, now);  // slow again: shrinks to the smallest draw
+  until_change(p, r, s, 36.0, now);  // slow again: shrinks to the smallest draw
   CHECK(s.band_columns == 128);
   frames(p, r, s, 40, 36.0, now);  // as slow there, measured: back to the size before, for 5 s
   CHECK(s.band_rows == 4);

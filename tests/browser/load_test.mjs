@@ -31,10 +31,11 @@ function uiFrames(page, ms) {
     const ext = gl.getExtension("EXT_disjoint_timer_query_webgl2");
     const queries = [], gpu = [];
     let frames = 0, worst = 0, last = performance.now();
-    const t0 = last;
+    const t0 = last, intervals = [];
     const tick = () => {
       const now = performance.now();
       worst = Math.max(worst, now - last);
+      intervals.push(now - last);
       last = now;
       frames++;
       if (ext) {  // end the previous frame's query, start this one's (rAF callbacks run before the page's)
@@ -51,7 +52,7 @@ function uiFrames(page, ms) {
       else {
         if (ext && queries[queries.length - 1].open) gl.endQuery(ext.TIME_ELAPSED_EXT);
         const gpuMs = gpu.length ? gpu.reduce((a, b) => a + b, 0) / gpu.length : NaN;
-        done({ fps: frames * 1000 / (now - t0), worst, gpuMs, queries: gpu.length, timer: !!ext });
+        done({ fps: frames * 1000 / (now - t0), worst, gpuMs, queries: gpu.length, timer: !!ext, intervals });
       }
     };
     requestAnimationFrame(tick);
@@ -74,6 +75,7 @@ async function responsiveness(context, url) {
   await page.waitForTimeout(5000);
   const r = await uiFrames(page, 4000);
   const s = await stats(page);
+  if (process.env.PT_DUMP_INTERVALS) console.log("# intervals " + r.intervals.map((x) => x.toFixed(0)).join(" "));
   const draw = s.bandRows ? `${s.bandRows} row(s)` + (s.bandColumns ? ` x ${s.bandColumns} columns` : "") : `${s.height} rows`;
   console.log(`# chromium scene2 ${s.width}x${s.height}, sample limit reached: ${idle.fps.toFixed(1)} UI frames/s ` +
               `(worst frame ${idle.worst.toFixed(0)} ms), ${gpuText(idle)}`);
