@@ -181,8 +181,9 @@ class App {
   // What the panel's live readouts (samples/s, elapsed, time to the target) show: taken
   // kRefreshMs apart, and at once when the sample count or the run's state changes. Taken
   // every frame, they changed the panel every frame, and a changed panel is a whole
-  // present (the image's display pass, then the panel: src/platform/web.cpp), which with
-  // a software GPU cost more than the draws (issue 17; load_test's frame rate).
+  // present (the image's display pass, then the panel: src/platform/web.cpp). What that
+  // saves was not measurable against the spread of SwiftShader runs here
+  // (docs/benchmarks.md, "The pacer's window").
   struct Readout {
     double ms = -1e30;  // when taken (the frame's clock), and the clock the readouts use
     double samples_per_second = 0.0;

@@ -17,8 +17,8 @@ constexpr double kTargetFrameMs = 22.0;
 constexpr double kCpuBudgetMs = 12.0;
 constexpr int kMaxPassesPerFrame = 64;
 // When even one draw per frame keeps frames slower than kSlowDrawFrameMs (under 30 UI
-// frames/s: the mean of the window below, or two frames in a row twice as slow) the draw shrinks: rows first, then
-// columns, down to kMinBandRows x min_band_columns(). It grows back while frames are
+// frames/s: the mean of the window below, or two frames in a row twice as slow) the draw
+// shrinks: rows first, then columns, down to kMinBandRows x min_band_columns(). It grows back while frames are
 // faster than kGrowDrawFrameMs: columns to the whole width, then rows to the whole image,
 // then more draws per frame. Growth is gentle unless frames are fast: a software GL spends
 // a large fixed time per frame (SwiftShader: about 22 ms for compositing, the panel and

@@ -63,8 +63,6 @@ int frames(FramePacer& p, Renderer& r, RenderSettings& s, int n, double dt, doub
   return draws;
 }
 
-}  // namespace
-
 // Frames of `dt` ms until the draw size changes (at most `limit`); returns how many.
 int until_change(FramePacer& p, Renderer& r, RenderSettings& s, double dt, double& now, int limit = 100) {
   const int rows = s.band_rows, columns = s.band_columns;
@@ -74,6 +72,8 @@ int until_change(FramePacer& p, Renderer& r, RenderSettings& s, double dt, doubl
   }
   return -1;
 }
+
+}  // namespace
 
 TEST_CASE("FramePacer follows the interval between frames", "[gpu][pacing]") {
   test_gl();

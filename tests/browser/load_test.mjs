@@ -1,6 +1,7 @@
 // Browser test of the page's loading and pacing (Debian's Chromium, headless, SwiftShader):
 //   node tests/browser/load_test.mjs [--web build/web] [--site build/site] [--out build/browser-test]
 //                                    [--only responsiveness,large,site]
+// (PT_DUMP_INTERVALS=1: also print every frame interval of the responsiveness window)
 // Checks: frames slower than 30/s while rendering shrink the draws below a band of 4 rows
 // (and prints the UI frame rate with the sample limit reached and while rendering, the
 // draw size the pacing settled on, samples/s, and the GPU time per frame where
