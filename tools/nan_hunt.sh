@@ -14,6 +14,8 @@
 #     --seeds LIST         instead, these seeds (gen_scenes.py's form: 3,14,20-25)
 #     --kernels "A B"      kernels to run (default "compute fragment")
 #     --no-shipped         only the generated scenes
+#     --shipped-part K/N   of the shipped scenes (sorted), only the K-th of every N (1 <= K <= N),
+#                          so that N jobs side by side share them
 #     --launcher CMD       run each render through CMD (the sanitizer build's tools/lsan_retry.sh)
 #
 # Writes OUTDIR/nan_hunt.log: one line per render (scene, kernel, exit status, spp, samples
@@ -28,7 +30,7 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bin="${1:?usage: nan_hunt.sh BIN OUTDIR [options]}"
 out="${2:?usage: nan_hunt.sh BIN OUTDIR [options]}"
 shift 2
-size=1920x1080 seconds=8 spp=1000000 generated=200 first=1 kernels="compute fragment" shipped=1 seeds="" launcher=""
+size=1920x1080 seconds=8 spp=1000000 generated=200 first=1 kernels="compute fragment" shipped=1 seeds="" launcher="" part=1/1
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --size) size="$2"; shift ;;
@@ -39,6 +41,7 @@ while [[ $# -gt 0 ]]; do
     --seeds) seeds="$2"; shift ;;
     --kernels) kernels="$2"; shift ;;
     --no-shipped) shipped=0 ;;
+    --shipped-part) part="$2"; shift ;;
     --launcher) launcher="$2"; shift ;;
     *) echo "nan_hunt.sh: unknown option $1" >&2; exit 1 ;;
   esac
@@ -51,7 +54,12 @@ last=$((first + generated - 1))
 [[ -z "$seeds" && $generated -gt 0 ]] && seeds="$first-$last"
 scenes=()
 if [[ $shipped == 1 ]]; then
-  while IFS= read -r s; do scenes+=("$repo/$s"); done < <(cd "$repo" && find scenes -name '*.xml' | sort)
+  [[ $part =~ ^([0-9]+)/([0-9]+)$ ]] && ((BASH_REMATCH[1] >= 1 && BASH_REMATCH[1] <= BASH_REMATCH[2])) ||
+    { echo "nan_hunt.sh: --shipped-part wants K/N with 1 <= K <= N, not $part" >&2; exit 1; }
+  k=${BASH_REMATCH[1]} n=${BASH_REMATCH[2]} i=0
+  while IFS= read -r s; do
+    (( i++ % n == k - 1 )) && scenes+=("$repo/$s")
+  done < <(cd "$repo" && find scenes -name '*.xml' | sort)
 fi
 if [[ -n "$seeds" ]]; then
   while IFS= read -r s; do scenes+=("$s"); done < <(python3 "$repo/tools/gen_scenes.py" "$out/scenes" --seeds "$seeds" --repo "$repo") || exit 1
