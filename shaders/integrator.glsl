@@ -87,7 +87,7 @@ vec3 trace_path(Ray r) {
     vec3 wi = normalize(from_local(fr, bs.wi));
     if (!surface_sides_agree(sf, wi, bs.wi)) break;  // would cross the geometric surface
 #ifdef HAS_MEDIA
-    medium_cross(sigma, m, entering, n, wi);
+    medium_cross(sigma, sf, wi);
 #endif
     r = Ray(offset_origin(p, n, wi), wi);
     if (bounce >= 3) {

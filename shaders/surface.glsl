@@ -34,6 +34,9 @@ Surface surface_hit(Ray r, Hit h) {
 
 void surface_resolve(inout Surface sf, Ray r, Hit h, float u_child) {
   sf.m = resolve_composites(sf.m, sf.wo.z, sf.entering, u_child);
+#ifdef HAS_MEDIA
+  sf.medium = material_medium(sf.m, sf.sigma);  // the material's own, before a hit resolution (media.glsl)
+#endif
   // A shading normal (a mesh's interpolated vertex normals, a normal map) sets the BSDF's
   // frame; the geometric normal n still decides sides: a direction on different sides
   // of the two carries nothing, and rays leave off the geometric surface.

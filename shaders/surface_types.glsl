@@ -10,4 +10,8 @@ struct Surface {
   Frame fr;             // shading frame: z is the shading normal on the ray's side
   vec3 wo;              // unit direction to the viewer in fr
   bool shading_normal;  // fr is not the geometric frame: sides are decided by n
+#ifdef HAS_MEDIA
+  bool medium;          // after surface_resolve: the material bounds a medium (media.glsl)
+  vec3 sigma;           // its absorption per unit length
+#endif
 };

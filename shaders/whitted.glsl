@@ -108,7 +108,7 @@ vec3 trace_path(Ray r) {
     vec3 wi = normalize(from_local(sf.fr, bs.wi));
     if (!surface_sides_agree(sf, wi, bs.wi)) break;  // would cross the geometric surface
 #ifdef HAS_MEDIA
-    medium_cross(sigma, sf.m, sf.entering, sf.n, wi);
+    medium_cross(sigma, sf, wi);
 #endif
     r = Ray(offset_origin(h.p, sf.n, wi), wi);
   }

@@ -50,6 +50,37 @@ float sampled_weight_error(const Material& m, glm::vec3 wo, int n) {
   return worst;
 }
 
+std::vector<float> sampled_weight_errors(const std::string& material, const Features& f, const std::vector<double>& cosines,
+                                         bool entering, int n) {
+  const std::string side = entering ? "true" : "false";
+  // One kernel, the incidence from the input (compiling is most of the time on llvmpipe).
+  GlslKernel k(material +
+                   "vec4 kernel(vec4 x, int i) {\n  rng_init(uvec2(uint(i), 99u), 0u);\n  BsdfSample s;\n"
+                   "  vec3 WO = vec3(sqrt(1.0 - x.x * x.x), 0.0, x.x);\n"
+                   "  if (!material_sample(make_material(), WO, " + side + ", vec3(rand01(), rand01(), rand01()), s) || s.delta) return vec4(0.0);\n"
+                   "  float pdf;\n  vec3 f = material_eval(make_material(), WO, s.wi, " + side + ", pdf);\n"
+                   "  return vec4(abs(s.weight - f / pdf) / max(f / pdf, vec3(1e-6)), abs(pdf - s.pdf) / pdf);\n}\n",
+               f);
+  k.program().use();
+  k.program().set("u_dot_weight", 1);
+  std::vector<float> worst;
+  for (double c : cosines) {
+    float w = 0;
+    for (const glm::vec4& v : k.run(std::vector<glm::vec4>(size_t(n), glm::vec4(float(c), 0.0f, 0.0f, 0.0f))))
+      w = std::max({w, v.x, v.y, v.z, v.w});
+    worst.push_back(w);
+  }
+  return worst;
+}
+
+Features gltf_lobe_features() {
+  Features f = all_features();
+  f.material_features |= feature_bit(MaterialFeature::GltfSpecular) | feature_bit(MaterialFeature::GltfClearcoat) |
+                         feature_bit(MaterialFeature::GltfSheen) | feature_bit(MaterialFeature::GltfTransmission) |
+                         feature_bit(MaterialFeature::GltfMs);
+  return f;
+}
+
 Features all_features() {
   Features f;
   f.shapes = (1u << kNumShapeKinds) - 1;

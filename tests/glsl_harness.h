@@ -19,6 +19,9 @@
 namespace pt {
 
 Features all_features();
+// all_features() with every lobe of the glTF BSDF (KHR_materials_specular, _clearcoat,
+// _sheen, thin-walled _transmission) and the multiple-scattering compensation.
+Features gltf_lobe_features();
 
 // GLSL defining `MaterialRec <name>()` that returns material m as the production packer
 // writes it (render/packing.h) and the shader loads it: kind, tint, emission and the
@@ -28,6 +31,10 @@ std::string glsl_material(const Material& m, const char* name = "make_material")
 // The largest relative difference, over n samples of material m at incidence wo, between
 // a sample's weight and pdf and f cos / pdf and the pdf of the evaluated BSDF there.
 float sampled_weight_error(const Material& m, glm::vec3 wo, int n = 20000);
+// The same for GLSL `material` that defines make_material(), at each incidence cos_o (wo in
+// the xz plane), from the side `entering` says, with features f: the worst per incidence.
+std::vector<float> sampled_weight_errors(const std::string& material, const Features& f, const std::vector<double>& cosines,
+                                         bool entering = true, int n = 20000);
 
 class GlslKernel {
  public:

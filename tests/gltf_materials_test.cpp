@@ -239,8 +239,9 @@ TEST_CASE("glTF: KHR_materials_volume absorbs inside (Beer-Lambert) as its atten
                                   "<Objects><Mesh src=\"../assets/gltf/test-volume.gltf\"/></Objects></SceneLevel>",
                                   repo_path("scenes/gltf-test.xml"));
   REQUIRE(s.materials.size() == 1);
-  const SmoothDielectric* d = std::get_if<SmoothDielectric>(&s.materials[0].params);
+  const GltfPbr* d = std::get_if<GltfPbr>(&s.materials[0].params);  // the glTF BSDF with its volume
   REQUIRE(d);
+  CHECK(d->volume_ior() == 1.5f);
   CHECK(d->sigma.x == Approx(std::log(2.0)));
   RenderSettings st;
   st.max_bounces = 16;

@@ -46,10 +46,12 @@ class Gltf:
         self.cache = {}
 
     def accessor(self, fmt, kind, values, target=None):
-        key = (id(values), fmt, kind)  # the same list twice (a sphere per material): one accessor
+        # The same list twice (a sphere per material): one accessor. The cache holds the list
+        # too, so that its id is not reused by a later list while the cache keys it.
+        key = (id(values), fmt, kind)
         if key in self.cache:
-            return self.cache[key]
-        self.cache[key] = len(self.doc["accessors"])
+            return self.cache[key][0]
+        self.cache[key] = (len(self.doc["accessors"]), values)
         while len(self.bin) % 4:
             self.bin.append(0)
         offset = len(self.bin)
@@ -234,6 +236,27 @@ def lobes():
         m = g.material({"name": "thin-%d" % i, "doubleSided": True, "pbrMetallicRoughness": {"baseColorFactor": color, "metallicFactor": 0,
                         "roughnessFactor": rough}, "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
         g.node(g.mesh(*sphere(0.5), m), (1.2 * (i - 1), 0.5, 0))
+    g.write()
+    # KHR_materials_volume (scenes/gltf/volume.xml): closed spheres whose transmission
+    # refracts into an absorbing volume: clear glass, amber, frosted green, a gold half
+    # metal, and half transmission under a clearcoat over a blue base.
+    g = Gltf("volume")
+    spheres = (
+        ({"baseColorFactor": [1, 1, 1, 1], "metallicFactor": 0, "roughnessFactor": 0}, 1.0, None, {}),
+        ({"baseColorFactor": [1, 1, 1, 1], "metallicFactor": 0, "roughnessFactor": 0}, 1.0, ([1.0, 0.55, 0.15], 0.5), {}),
+        ({"baseColorFactor": [1, 1, 1, 1], "metallicFactor": 0, "roughnessFactor": 0.3}, 1.0, ([0.4, 0.9, 0.5], 0.6), {}),
+        ({"baseColorFactor": [1.0, 0.8, 0.45, 1], "metallicFactor": 0.5, "roughnessFactor": 0.15}, 1.0, ([0.9, 0.7, 0.4], 1.0), {}),
+        ({"baseColorFactor": [0.2, 0.35, 0.9, 1], "metallicFactor": 0, "roughnessFactor": 0.4}, 0.5, ([0.3, 0.5, 1.0], 0.8),
+         {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.05}}),
+    )
+    for i, (pbr, transmission, attenuation, more) in enumerate(spheres):
+        volume = {"thicknessFactor": 0.9}
+        if attenuation:
+            volume.update({"attenuationColor": attenuation[0], "attenuationDistance": attenuation[1]})
+        ext = {"KHR_materials_transmission": {"transmissionFactor": transmission}, "KHR_materials_volume": volume}
+        ext.update(more)
+        m = g.material({"name": "volume-%d" % i, "pbrMetallicRoughness": pbr, "extensions": ext})
+        g.node(g.mesh(*sphere(0.45, 32, 64), m), (1.05 * (i - 2), 0.45, 0))
     g.write()
     g = Gltf("specular")  # a grey dielectric of roughness 0.3: specularFactor 0..1; last: specularColor orange
     for i in range(6):

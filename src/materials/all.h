@@ -63,7 +63,7 @@ struct MaterialTraits {
   bool image_maps;       // reads the scene's image maps
   bool emission_at_hit;  // defines emission_hit_<glsl>
   bool cuts_hits;        // defines hit_present_<glsl>
-  bool medium;           // defines medium_sigma_<glsl> (kMedium)
+  bool medium;           // defines medium_<glsl> (kMedium)
   // An element of the kind that loses no energy: in a white furnace it returns exactly 1
   // (the stem's kFurnace; nullptr for the kinds that absorb or, like single-scattering
   // GGX, lose energy). The furnace test loops over them.

@@ -15,7 +15,8 @@
   X(GltfSheen, "GLTF_SHEEN", "materials/gltf_sheen.glsl")   /* KHR_materials_sheen */       \
   X(GltfTransmission, "GLTF_TRANSMISSION", nullptr) /* KHR_materials_transmission, thin-walled */ \
   X(GltfMs, "GLTF_MS", "materials/gltf_ms.glsl") /* multiple-scattering compensation (every glTF material; off: --gltf-ms off) */ \
-  X(Media, "MEDIA", nullptr) /* an absorbing medium inside a closed surface: the path tracks it (integrator.glsl) */
+  X(Media, "MEDIA", nullptr) /* an absorbing medium inside a closed surface: the path tracks it (integrator.glsl) */ \
+  X(GltfVolume, "GLTF_VOLUME", "ggx_dielectric.glsl") /* KHR_materials_volume: the transmission refracts into a volume */
 
 namespace pt {
 

@@ -22,7 +22,7 @@ namespace pt {
 // base colour, metallic-roughness, normal and emissive maps, its extensions' maps and a
 // record of their colour factors: materials/gltf_pbr.h), so material m's are at
 // m * kTexinfosPerMaterial.
-inline constexpr int kTexinfosPerMaterial = 13;
+inline constexpr int kTexinfosPerMaterial = 14;
 
 namespace texinfo_rec {
 inline constexpr int kTexels = 2;

@@ -12,6 +12,14 @@ vec3 eval_gltf_pbr(MaterialRec m, vec3 wo, vec3 wi, bool entering, out float pdf
 }
 bool sample_gltf_pbr(MaterialRec m, vec3 wo, bool entering, vec3 u, out BsdfSample s) { return false; }
 
+// The medium inside (kMedium): KHR_materials_volume's, where the material has one (its
+// absorption: the texinfo record kVolume, materials/gltf_pbr.h).
+bool medium_gltf_pbr(MaterialRec m, out vec3 sigma) {
+  GltfPbrRec q = gltf_pbr_rec(m);
+  sigma = q.volume > 0.0 ? load_texinfo(q.maps + 13).row0 : vec3(0.0);
+  return q.volume > 0.0;
+}
+
 // The uv sets and vertex colour at a hit.
 struct GltfUv { vec2 uv0; vec2 uv1; vec4 color; };
 
@@ -62,11 +70,12 @@ float gltf_alpha_hash(Ray r, int prim) {
 
 // The traversal's question (kCutsHits; bvh.glsl under HAS_HIT_CUTS): is the candidate hit
 // h of ray r on mesh triangle `prim` a surface? A back face of a single-sided material
-// is not (culled); alpha = alpha factor * base colour map alpha * COLOR_0 alpha, and MASK
+// is not (culled), except a volume's (its inside is the boundary a path inside crosses
+// out of: docs/gltf.md); alpha = alpha factor * base colour map alpha * COLOR_0 alpha, and MASK
 // keeps the hit where alpha >= cutoff, BLEND with probability alpha.
 bool hit_present_gltf_pbr(MaterialRec m, int prim, Ray r, Hit h) {
   GltfPbrRec q = gltf_pbr_rec(m);
-  if (q.two_sided < 0.5 && dot(r.d, h.n) > 0.0) return false;
+  if (q.two_sided < 0.5 && q.volume <= 0.0 && dot(r.d, h.n) > 0.0) return false;
   if (q.cutoff == 0.0) return true;  // OPAQUE (a mask at 0 keeps every alpha)
   GltfUv g = GltfUv(vec2(0.0), vec2(0.0), vec4(1.0));
   gltf_vertex_attributes(prim, h.p, g);

@@ -22,13 +22,17 @@
 // RGB sRGB), _clearcoat (clearcoatTexture R, clearcoatRoughnessTexture G, its own
 // clearcoatNormalTexture; without it the coat has the surface's normal before the base's
 // normal map), _sheen (sheenColorTexture RGB sRGB, sheenRoughnessTexture A),
-// _transmission thin-walled (transmission="t"; transmissionTexture R).
+// _transmission (transmission="t"; transmissionTexture R): thin-walled, or with
+// KHR_materials_volume (volume="true"; attenuationColor="r g b" attenuationDistance="d",
+// materials/medium.h) the transmission refracts into the volume that the mesh bounds, of
+// index `ior` (the BSDF: metallic_roughness.glsl), and a path inside keeps exp(-sigma t).
 #pragma once
 #include <string>
 
 #include "materials/gltf_lobes.h"
 #include "materials/gltf_map.h"
 #include "materials/material.h"
+#include "materials/medium.h"
 
 namespace pt {
 
@@ -48,28 +52,37 @@ struct GltfPbr {
   GltfMap base, metal_rough, normal, emissive;  // emission's factor is MaterialCommon's
   GltfLobes lobes;  // the extensions' factors
   GltfMap specular, specular_color, clearcoat, clearcoat_roughness, clearcoat_normal, sheen_color, sheen_roughness, transmission;
+  bool volume = false;         // KHR_materials_volume (thicknessFactor > 0): not thin-walled
+  glm::vec3 sigma{0.0f};       // its absorption per unit length (materials/medium.h)
   // The texinfo records of a material, from m * kTexinfosPerMaterial (gltf_pbr_resolve.glsl
   // reads them by these offsets); kFactors holds the colour factors (row0: specularColor,
-  // row1: sheenColor), the scalar ones are their maps' `strength`.
+  // row1: sheenColor), the scalar ones are their maps' `strength`; kVolume's row0 is the
+  // volume's absorption sigma (no map: thickness is not used, docs/gltf.md).
   enum Texinfo : int { kBase, kMetalRough, kNormal, kEmissive, kSpecular, kSpecularColor, kClearcoat, kClearcoatRoughness,
-                       kClearcoatNormal, kSheenColor, kSheenRoughness, kFactors, kTransmission, kNumTexinfos };
+                       kClearcoatNormal, kSheenColor, kSheenRoughness, kFactors, kTransmission, kVolume, kNumTexinfos };
   static_assert(kNumTexinfos <= kTexinfosPerMaterial);
 
-  // Stored: the first texinfo record, the factors, f0, the alpha cutoff (< 0: BLEND) and
-  // sidedness; at the hit it becomes a MetallicRoughness record (gltf_pbr.glsl).
+  // Stored: the first texinfo record, the factors, f0, the alpha cutoff (< 0: BLEND),
+  // sidedness and the volume's index of refraction (0: thin-walled); at the hit it becomes a
+  // MetallicRoughness record (gltf_pbr.glsl).
 #define PT_GLTF_PBR_FIELDS(F) \
-  F(int, maps) F(float, metallic) F(float, roughness) F(float, f0) F(float, alpha) F(float, cutoff) F(float, two_sided)
+  F(int, maps) F(float, metallic) F(float, roughness) F(float, f0) F(float, alpha) F(float, cutoff) F(float, two_sided) F(float, volume)
   PT_KIND_RECORD(PT_GLTF_PBR_FIELDS, PT_NO_FIELDS)
   static constexpr unsigned kNeeds = kind_bit(MaterialKind::MetallicRoughness);  // what it becomes at the hit
   static constexpr bool kResolvesAtHit = true;
   static constexpr bool kImageMaps = true;
   static constexpr bool kEmissionAtHit = true;
   static constexpr bool kCutsHits = true;
+  static constexpr bool kMedium = true;  // with a volume (medium_gltf_pbr)
 
+  // The volume's index (0: none): a volume needs transmission, and an ior of at least 1
+  // (ior 0, f0 = 1, reflects everything: nothing enters).
+  float volume_ior() const { return volume && lobes.transmission > 0.0f && ior >= 1.0f ? ior : 0.0f; }
   unsigned features() const {
     return (alphaMode != kOpaque || !doubleSided ? feature_bit(MaterialFeature::HitCuts) : 0u) |
            (emissive.image >= 0 ? feature_bit(MaterialFeature::EmissionMaps) : 0u) |
-           lobes.features(specular.image >= 0 || specular_color.image >= 0);
+           lobes.features(specular.image >= 0 || specular_color.image >= 0) |
+           (volume_ior() > 0.0f ? feature_bit(MaterialFeature::GltfVolume) | medium_features(sigma) : 0u);
   }
 
   void parse(MaterialParse& p) {
@@ -104,6 +117,10 @@ struct GltfPbr {
     doubleSided = a.boolean("doubleSided", false);
     lobes.parse(a);
     lobes.transmission = unit(a.number("transmission", 0.0f), "transmission");
+    volume = a.boolean("volume", false);
+    sigma = parse_medium(a);
+    if (!volume && (a.has("attenuationColor") || a.has("attenuationDistance")))
+      a.fail("'attenuationColor' and 'attenuationDistance' need volume=\"true\" (KHR_materials_volume)");
   }
   void pack(MaterialWriter& w) const {
     w.tint *= baseColor;
@@ -116,6 +133,7 @@ struct GltfPbr {
     // OPAQUE is a mask that keeps every alpha (>= 0); BLEND is coded as -1.
     w.set(rec::cutoff, alphaMode == kBlend ? -1.0f : alphaMode == kMask ? alphaCutoff : 0.0f);
     w.set(rec::two_sided, doubleSided ? 1.0f : 0.0f);
+    w.set(rec::volume, volume_ior());
   }
   // Its texinfo records: material m's are from m * kTexinfosPerMaterial (render/image_maps.h).
   void pack_texinfos(RecordBuffer& b, int first) const {
@@ -138,6 +156,8 @@ struct GltfPbr {
     b.set(first + kFactors, texinfo_rec::row1, lobes.sheenColor);
     b.set(first + kFactors, texinfo_rec::code, -1.0f);
     with(transmission, lobes.transmission).pack(b, first + kTransmission);
+    b.set(first + kVolume, texinfo_rec::row0, sigma);
+    b.set(first + kVolume, texinfo_rec::code, -1.0f);
   }
   template <class E>
   bool edit(E& e, MaterialCommon&) {

@@ -68,7 +68,7 @@ void resolve_hit_gltf_pbr(inout Surface sf, Ray r, Hit h) {
   // The extensions' values here (materials/gltf_pbr.h: the records from q.maps on).
   TexinfoRec factors = load_texinfo(q.maps + 11);
   vec3 f0 = vec3(q.f0);
-  float specular = 1.0, coat = 0.0, sheen_br = 0.0, sheen_rg = 0.0, coat_normal = 0.0, transmission = 0.0;
+  float specular = 1.0, coat = 0.0, sheen_br = 0.0, sheen_rg = 0.0, coat_normal = 0.0, transmission = 0.0, volume = 0.0;
 #ifdef HAS_GLTF_SPECULAR
   specular = load_texinfo(q.maps + 4).strength * gltf_map(q.maps + 4, g, vec4(1.0)).a;
   f0 = min(q.f0 * factors.row0 * gltf_map(q.maps + 5, g, vec4(1.0)).rgb, vec3(1.0));
@@ -86,8 +86,11 @@ void resolve_hit_gltf_pbr(inout Surface sf, Ray r, Hit h) {
 #ifdef HAS_GLTF_TRANSMISSION
   transmission = load_texinfo(q.maps + 12).strength * gltf_map(q.maps + 12, g, vec4(1.0)).r;
 #endif
+#ifdef HAS_GLTF_VOLUME
+  volume = q.volume;
+#endif
   sf.m = with_metallic_roughness_rec(
-      m, MetallicRoughnessRec(q.metallic * mr.b, q.roughness * mr.g, f0, specular, coat, sheen_rg, sheen_br, coat_normal, transmission));
+      m, MetallicRoughnessRec(q.metallic * mr.b, q.roughness * mr.g, f0, specular, coat, sheen_rg, sheen_br, coat_normal, transmission, volume));
 }
 
 // The surface step's emission hook (kEmissionAtHit): a double-sided material emits from

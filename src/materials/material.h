@@ -19,8 +19,9 @@
 // int prim, Ray, Hit): whether a candidate hit on a mesh triangle is a surface at all,
 // asked by the traversal itself so that every ray, shadow rays too, sees the same
 // surface; compiled only under HAS_HIT_CUTS, materials/features.h) and kMedium (it
-// defines vec3 medium_sigma_<glsl>(MaterialRec): its surface bounds a homogeneous medium
-// of that absorption coefficient per unit length, which a path that crosses into it
+// defines bool medium_<glsl>(MaterialRec, out vec3 sigma): where it returns true, its
+// surface bounds a homogeneous medium of absorption coefficient sigma per unit length
+// (asked before a kind resolved at the hit becomes its hit record), which a path that crosses into it
 // travels in until it crosses out (Beer-Lambert; shaders/integrator.glsl); compiled only
 // under HAS_MEDIA, which a kind's features() reports where a material absorbs).
 #pragma once

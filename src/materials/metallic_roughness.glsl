@@ -13,6 +13,16 @@
 // sheen lobes); the pdf is the mixture's (one-sample MIS, as pbrt's BSDFs do). Below
 // roughness 0.03 a specular lobe is a mirror chosen with its probability, weight F / p;
 // the material is a delta one only when every lobe it has is.
+// With KHR_materials_volume (HAS_GLTF_VOLUME; the hit field volume = the volume's index of
+// refraction) the transmission is not a thin wall: that share of the dielectric, (1 -
+// metallic) transmission, is the GGX microfacet dielectric of Walter et al. 2007 (the
+// exact Fresnel of eta = ior entering, 1 / ior leaving, reflecting and refracting:
+// ggx_dielectric.glsl; below roughness 0.03 the smooth one), tinted by the base colour at
+// each refraction, and the layer over a diffuse base keeps the rest, (1 - transmission):
+//     f = metallic f_metal + (1 - metallic) [(1 - transmission) f_layer + transmission f_walter]
+// It is the same from both sides (the path inside sees the diffuse and metal shares
+// reflect inwards), sampled as the transmission's lobe; the medium inside is GltfPbr's
+// (gltf_pbr.glsl medium_gltf_pbr). Blender's Principled BSDF mixes its glass lobe the same way.
 // With HAS_GLTF_MS (the default; materials/gltf_ms.glsl) the GGX lobes' multiple scattering
 // is compensated (Kulla and Conty 2017): the metal gains F_ms (1 - E(n.v)) (1 - E(n.l)) /
 // (pi (1 - E_avg)) and the dielectric's base is weighted by (1 - E_s(n.v)) (1 - E_s(n.l)) /
@@ -41,7 +51,8 @@ struct MrLobes {
   vec3 coat_n;     // the coat's normal in the shading frame
   vec3 sheen;
   float sheen_roughness;
-  float transmission;  // thin-walled KHR_materials_transmission
+  float transmission;  // KHR_materials_transmission
+  float volume;        // KHR_materials_volume's index of refraction; 0: thin-walled
 #ifdef HAS_GLTF_MS
   vec2 ms_eo;    // (E, E2) of the base's GGX lobe at wo (mr_lobes_at)
   vec2 ms_eavg;  // their averages
@@ -80,11 +91,21 @@ MrLobes mr_lobes(MaterialRec m) {
   l.sheen_roughness = gltf_sheen_roughness(br.y);
 #endif
   l.transmission = 0.0;
+  l.volume = 0.0;
 #ifdef HAS_GLTF_TRANSMISSION
   l.transmission = q.transmission;
 #endif
+#ifdef HAS_GLTF_VOLUME
+  l.volume = q.volume;
+#endif
   return l;
 }
+
+#ifdef HAS_GLTF_VOLUME
+bool mr_volume(MrLobes l) { return l.volume > 0.0 && l.transmission > 0.0; }
+#else
+bool mr_volume(MrLobes l) { return false; }
+#endif
 
 bool mr_smooth(float roughness) { return roughness < 0.03; }
 
@@ -176,8 +197,14 @@ vec3 mr_probabilities(MaterialRec m, MrLobes l, vec3 wo) {
 #endif
   float wc = mr_coat_weight(l, wo), wt = 0.0;
 #ifdef HAS_GLTF_TRANSMISSION
-  wt = wd * l.transmission;
-  wd -= wt;
+  if (mr_volume(l)) {  // the transmission's share is a dielectric of its own: the layer keeps the rest
+    ws -= (1.0 - l.metallic) * max3(mr_fresnel_layer(l, wo.z)) * l.transmission;
+    wt = (1.0 - l.metallic) * l.transmission;
+    wd *= 1.0 - l.transmission;
+  } else {
+    wt = wd * l.transmission;
+    wd -= wt;
+  }
 #endif
 #ifdef HAS_GLTF_MS
   wd += wm;  // cosine-sampled with the diffuse lobe
@@ -189,25 +216,49 @@ vec3 mr_probabilities(MaterialRec m, MrLobes l, vec3 wo) {
   wt *= keep;
   wd = wd * keep + e;
 #endif
-  float ps = wd + wt <= 0.0 ? 1.0 : clamp(ws / (ws + wd + wt), 0.1, 0.9);  // no cosine-sampled light: all specular
+  // no cosine-sampled or transmitted light: all specular; no specular light: none
+  float ps = wd + wt <= 0.0 ? 1.0 : ws <= 0.0 ? 0.0 : clamp(ws / (ws + wd + wt), 0.1, 0.9);
   float pt = wt <= 0.0 ? 0.0 : wd <= 0.0 ? 1.0 : clamp(wt / (wt + wd), 0.1, 0.9);
   float pc = l.coat <= 0.0 ? 0.0 : clamp(wc / (wc + (1.0 - wc) * (ws + wd + wt)), 0.1, 0.9);
   return vec3(pc, ps, pt);
 }
 
-// The smooth base lobe's reflectance at incidence cos_o (a mirror: h = n).
+// The smooth base lobe's reflectance at incidence cos_o (a mirror: h = n); a volume's
+// share of the dielectric reflects in its own lobe.
 vec3 mr_mirror_fresnel(MaterialRec m, MrLobes l, float cos_o) {
-  return (1.0 - l.metallic) * mr_fresnel_layer(l, cos_o) + l.metallic * mr_fresnel_metal(m, cos_o);
+  return (1.0 - l.metallic) * (mr_volume(l) ? 1.0 - l.transmission : 1.0) * mr_fresnel_layer(l, cos_o) +
+         l.metallic * mr_fresnel_metal(m, cos_o);
 }
+
+#ifdef HAS_GLTF_VOLUME
+// The volume's lobe (f |n.i| and its density within the lobe; wi on either side) for a
+// rough surface: (1 - metallic) transmission f_walter, before what the layers over it
+// leave. Zero for a smooth one (a delta lobe: sample_metallic_roughness).
+float mr_volume_eta(MrLobes l, bool entering) { return entering ? l.volume : 1.0 / l.volume; }
+vec3 mr_eval_volume(MaterialRec m, MrLobes l, vec3 wo, vec3 wi, bool entering, out float pdf) {
+  pdf = 0.0;
+  if (mr_smooth(l.roughness)) return vec3(0.0);
+  float alpha = l.roughness * l.roughness;
+  return ggx_dielectric_eval(alpha, mr_volume_eta(l, entering), m.tint, wo, wi, pdf) * ((1.0 - l.metallic) * l.transmission);
+}
+#endif
 
 #ifdef HAS_GLTF_TRANSMISSION
 // The thin-walled transmission (wi below the surface): the GGX lobe of wi mirrored through
 // the surface, wr = (wi.x, wi.y, -wi.z), tinted by the base colour and weighted by what the
 // layers over it leave: (1 - metallic) transmission (1 - specular max(F(v.h))) tint D G2 / (4 n.v).
-vec3 mr_eval_transmission(MaterialRec m, MrLobes l, vec3 wo, vec3 wi, out float pdf) {
+// With a volume, its refraction instead (mr_eval_volume).
+vec3 mr_eval_transmission(MaterialRec m, MrLobes l, vec3 wo, vec3 wi, bool entering, out float pdf) {
   pdf = 0.0;
   if (l.transmission <= 0.0 || mr_smooth(l.roughness)) return vec3(0.0);
   vec3 p = mr_probabilities(m, l, wo);
+#ifdef HAS_GLTF_VOLUME
+  if (mr_volume(l)) {
+    vec3 f = mr_eval_volume(m, l, wo, wi, entering, pdf) * (mr_sheen_scale(l, wo.z, -wi.z) * (1.0 - mr_coat_weight(l, wo)));
+    pdf *= (1.0 - p.x) * (1.0 - p.y) * p.z;
+    return f;
+  }
+#endif
   vec3 wr = vec3(wi.xy, -wi.z);
   vec3 h = normalize(wo + wr);
   float alpha = l.roughness * l.roughness, a2 = alpha * alpha;
@@ -224,7 +275,7 @@ vec3 eval_metallic_roughness(MaterialRec m, vec3 wo, vec3 wi, bool entering, out
   if (wo.z <= 0.0) return vec3(0.0);
   MrLobes l = mr_lobes_at(m, wo);
 #ifdef HAS_GLTF_TRANSMISSION
-  if (wi.z < 0.0) return mr_eval_transmission(m, l, wo, wi, pdf);
+  if (wi.z < 0.0) return mr_eval_transmission(m, l, wo, wi, entering, pdf);
 #endif
   if (wi.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(wo + wi);
@@ -247,10 +298,17 @@ vec3 eval_metallic_roughness(MaterialRec m, vec3 wo, vec3 wi, bool entering, out
 #endif
   if (!mr_smooth(l.roughness)) {
     float alpha = l.roughness * l.roughness, a2 = alpha * alpha;
-    vec3 fresnel = (1.0 - l.metallic) * fd + l.metallic * mr_fresnel_metal(m, vh);
+    vec3 fresnel = (1.0 - l.metallic) * fd * (mr_volume(l) ? 1.0 - l.transmission : 1.0) + l.metallic * mr_fresnel_metal(m, vh);
     f += fresnel * (ggx_d(h.z, a2) * ggx_g2(wo.z, wi.z, a2) / (4.0 * wo.z));  // f_s |n.l|
     pdf_base += p.y * pdf_ggx_vndf(wo, h, a2);
   }
+#ifdef HAS_GLTF_VOLUME
+  if (mr_volume(l)) {  // the volume's reflection (the layers over it scale f below)
+    float pdf_v;
+    f += mr_eval_volume(m, l, wo, wi, entering, pdf_v);
+    pdf_base += (1.0 - p.y) * p.z * pdf_v;
+  }
+#endif
 #ifdef HAS_GLTF_SHEEN
   f = f * mr_sheen_scale(l, wo.z, wi.z) + l.sheen * gltf_sheen_eval(l.sheen_roughness, wo, wi);
 #endif
@@ -305,19 +363,43 @@ bool sample_metallic_roughness(MaterialRec m, vec3 wo, bool entering, vec3 u, ou
     }
     bool transmitted = false;
 #ifdef HAS_GLTF_TRANSMISSION
-    if (!specular && (uz - p.y) / (1.0 - p.y) < p.z) {  // the thin-walled transmission
-      if (mr_smooth(l.roughness)) {  // straight through
-        s.wi = -wo;
-        s.weight = (1.0 - l.metallic) * l.transmission * (1.0 - max3(mr_fresnel_layer(l, wo.z))) * m.tint *
-                   ((1.0 - mr_coat_weight(l, wo)) * mr_sheen_scale(l, wo.z, wo.z) / ((1.0 - p.x) * (1.0 - p.y) * p.z));
-        s.pdf = 0.0;
-        s.delta = true;
-        return true;
+    float ut = (uz - p.y) / (1.0 - p.y);
+    if (!specular && ut < p.z) {  // the transmission
+#ifdef HAS_GLTF_VOLUME
+      if (mr_volume(l)) {  // into (or out of) the volume: the dielectric's lobe
+        float eta = mr_volume_eta(l, entering), uf = ut / p.z;
+        if (mr_smooth(l.roughness)) {  // reflect with probability F, else refract (SmoothDielectric)
+          float scale = (1.0 - l.metallic) * l.transmission * (1.0 - mr_coat_weight(l, wo)) / ((1.0 - p.x) * (1.0 - p.y) * p.z);
+          vec3 wt;
+          if (uf < fresnel_dielectric(wo.z, eta) || !refract_local(wo, eta, wt)) {
+            s.wi = vec3(-wo.x, -wo.y, wo.z);
+            s.weight = vec3(scale * mr_sheen_scale(l, wo.z, wo.z));
+          } else {
+            s.wi = wt;
+            s.weight = m.tint * (scale * mr_sheen_scale(l, wo.z, -wt.z) / (eta * eta));
+          }
+          s.pdf = 0.0;
+          s.delta = true;
+          return true;
+        }
+        if (!ggx_dielectric_sample(l.roughness * l.roughness, eta, wo, u.xy, uf, s.wi)) return false;
+        transmitted = true;  // (either side: evaluated below)
       }
-      vec3 wr = reflect(-wo, sample_ggx_vndf(wo, l.roughness * l.roughness, u.xy));
-      if (wr.z <= 0.0) return false;
-      s.wi = vec3(wr.xy, -wr.z);
-      transmitted = true;
+#endif
+      if (!transmitted) {  // thin-walled
+        if (mr_smooth(l.roughness)) {  // straight through
+          s.wi = -wo;
+          s.weight = (1.0 - l.metallic) * l.transmission * (1.0 - max3(mr_fresnel_layer(l, wo.z))) * m.tint *
+                     ((1.0 - mr_coat_weight(l, wo)) * mr_sheen_scale(l, wo.z, wo.z) / ((1.0 - p.x) * (1.0 - p.y) * p.z));
+          s.pdf = 0.0;
+          s.delta = true;
+          return true;
+        }
+        vec3 wr = reflect(-wo, sample_ggx_vndf(wo, l.roughness * l.roughness, u.xy));
+        if (wr.z <= 0.0) return false;
+        s.wi = vec3(wr.xy, -wr.z);
+        transmitted = true;
+      }
     }
 #endif
     if (!transmitted) {

@@ -31,10 +31,11 @@ struct MetallicRoughness {
   // roughness; sheen_rg, sheen_br: the sheen colour and roughness (two per slot:
   // gltf_pack2). Hit field coat_normal: the clearcoat's normal in the shading frame
   // (packed; 0: the shading normal), which GltfPbr sets from its maps; transmission: the
-  // thin-walled KHR_materials_transmission (GltfPbr's; a uniform MetallicRoughness has none).
+  // KHR_materials_transmission (GltfPbr's; a uniform MetallicRoughness has none), thin-walled
+  // unless volume, the index of refraction of KHR_materials_volume's volume, is > 0.
 #define PT_METALLIC_ROUGHNESS_FIELDS(F) \
   F(float, metallic) F(float, roughness) F(vec3, f0) F(float, specular) F(float, coat) F(float, sheen_rg) F(float, sheen_br)
-#define PT_METALLIC_ROUGHNESS_HIT_FIELDS(F) F(float, coat_normal) F(float, transmission)
+#define PT_METALLIC_ROUGHNESS_HIT_FIELDS(F) F(float, coat_normal) F(float, transmission) F(float, volume)
   PT_KIND_RECORD(PT_METALLIC_ROUGHNESS_FIELDS, PT_METALLIC_ROUGHNESS_HIT_FIELDS)
 
   unsigned features() const { return lobes.features(); }

@@ -31,4 +31,7 @@ bool sample_smooth_dielectric(MaterialRec m, vec3 wo, bool entering, vec3 u, out
 }
 
 // The medium inside (kMedium): its absorption per unit length.
-vec3 medium_sigma_smooth_dielectric(MaterialRec m) { return smooth_dielectric_rec(m).sigma; }
+bool medium_smooth_dielectric(MaterialRec m, out vec3 sigma) {
+  sigma = smooth_dielectric_rec(m).sigma;
+  return true;
+}

@@ -20,7 +20,7 @@ namespace {
 // What this reader implements of glTF's extensions (docs/gltf.md).
 constexpr const char* kSupportedExtensions[] = {"KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_texture_transform",
                                                 "KHR_materials_transmission", "KHR_materials_specular", "KHR_materials_clearcoat",
-                                                "KHR_materials_sheen", "KHR_lights_punctual"};
+                                                "KHR_materials_sheen", "KHR_materials_volume", "KHR_lights_punctual"};
 
 bool supported(const std::string& e) {
   for (const char* s : kSupportedExtensions)

@@ -77,19 +77,6 @@ int Loader::gltf_material(const GltfMaterial& g, XmlAttrs& a) {
   Material m;
   m.line = a.line();
   m.emission = g.emissive;  // with the base colour: both shade (docs/gltf.md)
-  if (g.volume && g.transmission >= 0.5f) {
-    // KHR_materials_volume: a dielectric of the material's ior and roughness, tinted by the
-    // base colour, with the volume's absorption inside: smooth below roughness 0.03 (as the
-    // glTF BSDF's lobes), else GGX (RoughDielectric). Metallic, maps and the other lobes
-    // are not used (thin-walled transmission is GltfPbr's: docs/gltf.md).
-    m.tint = g.base_color;
-    const float ior = g.ior >= 1.0f ? g.ior : 1.5f;
-    const glm::vec3 sigma = sigma_from(g.attenuation_color, g.attenuation_distance);
-    if (g.roughness < 0.03f) m.params = SmoothDielectric{.ior = ior, .sigma = sigma};
-    else m.params = RoughDielectric{.ior = ior, .roughness = g.roughness, .sigma = sigma};
-    scene.materials.push_back(m);
-    return int(scene.materials.size()) - 1;
-  }
   GltfPbr p;
   p.baseColor = g.base_color;
   p.alpha = g.alpha;
@@ -99,6 +86,8 @@ int Loader::gltf_material(const GltfMaterial& g, XmlAttrs& a) {
   p.alphaMode = g.alpha_mode;
   p.alphaCutoff = g.alpha_cutoff;
   p.doubleSided = g.double_sided;
+  p.volume = g.volume;  // KHR_materials_volume: the transmission refracts into it (materials/gltf_pbr.h)
+  p.sigma = sigma_from(g.attenuation_color, g.attenuation_distance);
   // The maps' images, decoded once per scene and decoding: colour maps sRGB (alpha linear),
   // the metallic-roughness map linear, the normal map onto [-1, 1].
   enum Decoding { kSrgb, kLinear, kNormal };

@@ -263,8 +263,7 @@ std::string generate_prelude(const Features& features) {
     g += "bool material_medium(MaterialRec m, out vec3 sigma) {\n";
     for (int i = 0; i < kNumMaterialKinds; ++i)
       if (f.has(MaterialKind(i)) && kMaterialTraits[i].medium)
-        g += "  if (m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") {\n    sigma = medium_sigma_" + kMaterialKinds[i].glsl +
-             "(m);\n    return true;\n  }\n";
+        g += "  if (m.kind == MAT_" + upper(kMaterialKinds[i].glsl) + ") return medium_" + kMaterialKinds[i].glsl + "(m, sigma);\n";
     g += "  sigma = vec3(0.0);\n  return false;\n}\n#include \"media.glsl\"\n";
   }
   std::string delta = "bool material_is_delta(MaterialRec m) {\n";
