@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Test launcher of the sanitizer build (tests/CMakeLists.txt): runs a test command, and
-# runs it once more only when LeakSanitizer itself crashed at exit - its stop-the-world
+# runs it again (up to three more times) only when LeakSanitizer itself crashed at exit - its stop-the-world
 # tracer caught a signal ("Tracer caught signal 11 ... LeakSanitizer has encountered a
 # fatal error"), an intermittent fault of the sanitizer runtime that is not a finding
 # (google/sanitizers#1353, open). A leak report, an ASan or UBSan error, a failed check
@@ -12,10 +12,18 @@ trap 'rm -f "$out" "$err"' EXIT
 rc=$?
 cat "$out"
 cat "$err" >&2
-if [[ $rc -ne 0 ]] && grep -q "^Tracer caught signal" "$err" && grep -q "LeakSanitizer has encountered a fatal error" "$err" &&
-   ! grep -qE "ERROR: (LeakSanitizer|AddressSanitizer)|runtime error:|FAILED|failed" "$out" "$err"; then
-  echo "lsan_retry: LeakSanitizer's tracer crashed after the command ran (not a finding); running it again" >&2
-  "$@"
+# (Once was not always enough: on 2026-12-04 four tests of one CI run crashed the tracer
+# twice in a row, within seconds of each other, each after "All tests passed".)
+tracer_crashed() {
+  [[ $rc -ne 0 ]] && grep -q "^Tracer caught signal" "$err" && grep -q "LeakSanitizer has encountered a fatal error" "$err" &&
+    ! grep -qE "ERROR: (LeakSanitizer|AddressSanitizer)|runtime error:|FAILED|failed" "$out" "$err"
+}
+for attempt in 2 3 4; do
+  tracer_crashed || break
+  echo "lsan_retry: LeakSanitizer's tracer crashed after the command ran (not a finding); running it again (run $attempt)" >&2
+  "$@" >"$out" 2>"$err"
   rc=$?
-fi
+  cat "$out"
+  cat "$err" >&2
+done
 exit $rc
