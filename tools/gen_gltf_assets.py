@@ -50,6 +50,7 @@ class Gltf:
         # too, so that its id is not reused by a later list while the cache keys it.
         key = (id(values), fmt, kind)
         if key in self.cache:
+            assert self.cache[key][1] is values, "an accessor cached for another list"
             return self.cache[key][0]
         self.cache[key] = (len(self.doc["accessors"]), values)
         while len(self.bin) % 4:
