@@ -3,10 +3,10 @@
 // and the glTF BSDF's volume (materials/metallic_roughness.glsl, KHR_materials_volume).
 // Frames: wo.z > 0 (the side the ray came from), wi.z < 0 is refraction; eta = n on wi's
 // far side / n on wo's; a2 = alpha^2. Refraction is tinted by `tint` and carries the
-// radiance scaling 1 / eta^2 (pbrt-v4, 9.5.2).
+// radiance scaling 1 / eta^2 (pbrt-v4, 9.5.2); a smooth one is smooth_interface.glsl.
 #include "fresnel.glsl"
 #include "ggx.glsl"
-#include "refract.glsl"
+#include "smooth_interface.glsl"  // (refract.glsl with it)
 
 // f |n.i| and the density of wi (the sampler's below: VNDF, then F or 1 - F).
 vec3 ggx_dielectric_eval(float alpha, float eta, vec3 tint, vec3 wo, vec3 wi, out float pdf) {

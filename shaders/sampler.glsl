@@ -44,17 +44,11 @@ uint laine_karras(uint x, uint seed) {
 uint nested_uniform_scramble(uint x, uint seed) { return reverse_bits(laine_karras(reverse_bits(x), seed)); }
 
 // Point `index` of the 4D Sobol sequence: dimension 0 is van der Corput (the bits
-// reversed); 1..3 in one loop of a fixed count without branches, which compilers unroll
-// so the direction numbers become immediates (the scrambled index has all 32 bits set at
-// random: an early exit saves nothing). tests/sobol_test.cpp: equal to sobol_sample.
-uvec4 sobol4(uint index) {
-  uvec3 x = uvec3(0u);
-  for (int bit = 0; bit < 32; ++bit) {
-    uint mask = 0u - ((index >> uint(bit)) & 1u);
-    x ^= mask & uvec3(SOBOL_DIRECTIONS[32 + bit], SOBOL_DIRECTIONS[64 + bit], SOBOL_DIRECTIONS[96 + bit]);
-  }
-  return uvec4(reverse_bits(index), x);
-}
+// reversed); 1..3 are sobol_dims123, generated (core/sobol.cpp glsl_sobol_dims) as 32
+// branch-free steps with the direction numbers as immediates (the scrambled index has all
+// 32 bits set at random: an early exit saves nothing). tests/sobol_test.cpp: equal to
+// sobol_sample.
+uvec4 sobol4(uint index) { return uvec4(reverse_bits(index), sobol_dims123(index)); }
 
 vec4 owen_sobol4(uint index, uint seed) {
   uint i = nested_uniform_scramble(index, seed);

@@ -141,6 +141,7 @@ std::vector<glm::vec4> GlslKernel::run(const std::vector<glm::vec4>& inputs) {
     program_.set(textures_[k].first.c_str(), int(k) + 1);
   }
   program_.set("u_count", n);
+  tables_.bind(program_);
   glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
   glViewport(0, 0, kDataWidth, rows);
   glDrawArrays(GL_TRIANGLES, 0, 3);

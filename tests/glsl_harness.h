@@ -13,6 +13,7 @@
 #include "gpu/program.h"
 #include "gpu/texture.h"
 #include "render/packing.h"
+#include "render/uniform_tables.h"
 #include <memory>
 #include "shadergen/shadergen.h"
 
@@ -53,6 +54,7 @@ class GlslKernel {
   Program program_;
   std::vector<std::unique_ptr<Texture>> owned_;
   std::vector<std::pair<std::string, const Texture*>> textures_;
+  UniformTables tables_;  // the build's tables (render/uniform_tables.h)
 };
 
 }  // namespace pt

@@ -335,7 +335,7 @@ TEST_CASE("glTF lobes: --gltf-ms off renders the specification's single-scatteri
                                   "</Sphere></Objects></SceneLevel>",
                                   repo_path("scenes/x.xml"));
   CHECK(Features::of(s).has(MaterialFeature::GltfMs));
-  CHECK(generate_integrator(Features::of(s)).text.find("const vec2 GGX_E[") != std::string::npos);
+  CHECK(generate_integrator(Features::of(s)).text.find("uniform GgxMsTable {") != std::string::npos);
   Renderer r;
   RenderSettings st;
   st.gltf_ms = false;
@@ -421,12 +421,12 @@ TEST_CASE("glTF lobes: each lobe is compiled in only where a material uses it", 
   const std::string core = program(""), spec = program("specular=\"0.5\""), coat = program("clearcoat=\"0.5\""),
                     sheen = program("sheenColor=\"0.5 0.5 0.5\"");
   CHECK(core.find("float gltf_coat_eval(") == std::string::npos);
-  CHECK(core.find("const float SHEEN_E[") == std::string::npos);
+  CHECK(core.find("uniform SheenTable {") == std::string::npos);
   CHECK(core.find("#define HAS_GLTF_SPECULAR") == std::string::npos);
   CHECK(spec.find("#define HAS_GLTF_SPECULAR") != std::string::npos);
   CHECK(coat.find("float gltf_coat_eval(") != std::string::npos);
-  CHECK(coat.find("const float SHEEN_E[") == std::string::npos);
-  CHECK(sheen.find("const float SHEEN_E[") != std::string::npos);
+  CHECK(coat.find("uniform SheenTable {") == std::string::npos);
+  CHECK(sheen.find("uniform SheenTable {") != std::string::npos);
   CHECK(sheen.find("float gltf_coat_eval(") == std::string::npos);
   auto gltf = [](const std::string& attrs) {
     const Scene s = load_scene_text("<SceneLevel><Camera position=\"0 0 5\"/><Objects><Sphere center=\"0 0 0\" radius=\"1\"><GltfPbr doubleSided=\"true\" " +

@@ -155,7 +155,10 @@ case "$part" in
                scenes/gltf/mr-grid.xml scenes/gltf/maps-quad.xml scenes/bench/million.xml}; do
         for k in compute fragment; do
           echo "== $(basename "$v") $(basename "$s" .xml) $k"
-          $v render "$s" --size $S --spp 100000 --seconds "${WAVE2_SECONDS:-5}" --kernel $k --out /tmp/w.png | grep -E "shader|rendered|non-finite|estimated"
+          # (line-buffered, so that a call stopped at its limit still shows what it measured;
+          # a render that hangs is stopped after WAVE2_LIMIT s)
+          timeout "${WAVE2_LIMIT:-120}" $v render "$s" --size $S --spp 100000 --seconds "${WAVE2_SECONDS:-5}" --kernel $k --out /tmp/w.png |
+            grep --line-buffered -E "shader|rendered|non-finite|estimated"
         done
       done
     done

@@ -55,7 +55,8 @@ const char* const kUsage =
     "        replaced atomically at 1, 2, 4, ... spp; a broken edit prints file:line and keeps the last image\n"
     "bench:  renders for S seconds; at 1, 2, 4, ... spp records time, relMSE and RMSE\n"
     "        against the reference (same size) in CSV; prints samples/s and rays/s\n"
-    "Environment: PT_EGL_SOFTWARE=1 forces Mesa's software renderer.\n";
+    "Environment: PT_EGL_SOFTWARE=1 forces Mesa's software renderer; PT_DUMP_PROGRAMS=DIR writes each\n"
+    "linked program's source and driver binary to DIR (docs/benchmarks.md, \"What limits speed now\").\n";
 
 void usage_error(const std::string& msg) {
   std::fprintf(stderr, "pathtracer: %s\n%s", msg.c_str(), kUsage);

@@ -36,11 +36,18 @@ uint32_t sobol_sample(uint32_t index, int dim) {
   return x;
 }
 
-std::string glsl_sobol_table() {
+std::string glsl_sobol_dims() {
   const auto v = sobol_directions();
-  std::string s = "const uint SOBOL_DIRECTIONS[" + std::to_string(v.size()) + "] = uint[](";
-  for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v[i]) + "u";
-  return s + ");\n";
+  // As immediates, never an array: a GPU compiler that keeps a loop over a constant array
+  // puts the array in per-invocation local memory (NVIDIA's does: 128 words written at the
+  // start of every invocation and read back from cache; docs/benchmarks.md, "Constant
+  // tables out of local memory").
+  std::string s = "uvec3 sobol_dims123(uint index) {\n  uvec3 x = uvec3(0u);\n";
+  for (int bit = 0; bit < 32; ++bit) {
+    s += "  x ^= (0u - ((index >> " + std::to_string(bit) + "u) & 1u)) & uvec3(";
+    for (int d = 1; d < 4; ++d) s += std::to_string(v[size_t(d) * 32 + size_t(bit)]) + (d < 3 ? "u, " : "u);\n");
+  }
+  return s + "  return x;\n}\n";
 }
 
 }  // namespace pt

@@ -8,8 +8,8 @@
 
 namespace pt::gl_objects {
 
-enum Kind { kTexture, kFramebuffer, kProgram, kShader, kVertexArray, kKinds };
-inline constexpr std::array<const char*, kKinds> kNames = {"textures", "framebuffers", "programs", "shaders", "vertexArrays"};
+enum Kind { kTexture, kFramebuffer, kProgram, kShader, kVertexArray, kBuffer, kKinds };
+inline constexpr std::array<const char*, kKinds> kNames = {"textures", "framebuffers", "programs", "shaders", "vertexArrays", "buffers"};
 
 inline std::array<int, kKinds>& live() {
   static std::array<int, kKinds> counts{};

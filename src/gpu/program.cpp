@@ -1,15 +1,42 @@
 #include "gpu/program.h"
 
+#include <cstdlib>
 #include <cstring>
+#include <string>
 #include <utility>
 #include <vector>
 
+#include "core/file_io.h"
 #include "gpu/gl_objects.h"
 
 namespace pt {
 namespace {
 
 constexpr GLenum kCompletionStatus = 0x91B1;  // GL_COMPLETION_STATUS_KHR
+
+#ifndef __EMSCRIPTEN__
+// A diagnostic of the native build (docs/benchmarks.md, "What limits speed now"): with
+// PT_DUMP_PROGRAMS=DIR every linked program writes DIR/program-N.glsl (its fragment or
+// compute source as compiled) and DIR/program-N.bin (the driver's program binary, where
+// NVIDIA's holds its compiled code and resource counts). Off (null) unless set.
+const char* dump_dir() {
+  const char* d = std::getenv("PT_DUMP_PROGRAMS");
+  return d && *d ? d : nullptr;
+}
+
+void dump_program(GLuint id, const ShaderSource& src) {
+  static int n = 0;
+  const std::string stem = std::string(dump_dir()) + "/program-" + std::to_string(n++);
+  write_file_atomic(stem + ".glsl", src.text.data(), src.text.size());
+  GLint len = 0;
+  glGetProgramiv(id, GL_PROGRAM_BINARY_LENGTH, &len);
+  if (len <= 0) return;
+  std::vector<char> bin(static_cast<size_t>(len));
+  GLenum format = 0;
+  glGetProgramBinary(id, len, nullptr, &format, bin.data());
+  write_file_atomic(stem + ".bin", bin.data(), bin.size());
+}
+#endif
 
 // The info log of a shader or program object (the two GL families share a shape).
 template <typename GetIv, typename GetLog>
@@ -66,6 +93,9 @@ Program Program::start(const ShaderSource& vs, const ShaderSource& fs) {
   if (p.id_) gl_objects::created(gl_objects::kProgram);
   glAttachShader(p.id_, p.vs_);
   glAttachShader(p.id_, p.fs_);
+#ifndef __EMSCRIPTEN__
+  if (dump_dir()) glProgramParameteri(p.id_, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
+#endif
   glLinkProgram(p.id_);
   PT_GL_CHECK("glAttachShader/glLinkProgram");
   return p;
@@ -80,6 +110,7 @@ Program Program::start_compute(const ShaderSource& cs) {
   p.id_ = glCreateProgram();
   if (p.id_) gl_objects::created(gl_objects::kProgram);
   glAttachShader(p.id_, p.vs_);
+  if (dump_dir()) glProgramParameteri(p.id_, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
   glLinkProgram(p.id_);
   PT_GL_CHECK("glAttachShader/glLinkProgram (compute)");
   return p;
@@ -109,6 +140,9 @@ void Program::finish() {
       error = e.what();
     }
   }
+#ifndef __EMSCRIPTEN__
+  if (error.empty() && dump_dir()) dump_program(id_, f ? fs_src_ : vs_src_);
+#endif
   glDeleteShader(v);
   gl_objects::deleted(gl_objects::kShader);
   if (f) glDeleteShader(f), gl_objects::deleted(gl_objects::kShader);

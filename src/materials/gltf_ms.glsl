@@ -21,11 +21,11 @@ vec2 gltf_ms_e(float mu, float r) {
   int i = min(int(x), GGX_E_MU - 2), j = min(int(y), GGX_E_R - 2);
   float fx = x - float(i), fy = y - float(j);
   int k = j * GGX_E_MU + i;
-  return mix(mix(GGX_E[k], GGX_E[k + 1], fx), mix(GGX_E[k + GGX_E_MU], GGX_E[k + GGX_E_MU + 1], fx), fy);
+  return mix(mix(ggx_e_entry(k), ggx_e_entry(k + 1), fx), mix(ggx_e_entry(k + GGX_E_MU), ggx_e_entry(k + GGX_E_MU + 1), fx), fy);
 }
 // Their averages 2 int E mu dmu (the same interpolation in r).
 vec2 gltf_ms_eavg(float r) {
   float y = clamp(r, 0.0, 1.0) * float(GGX_E_R - 1);
   int j = min(int(y), GGX_E_R - 2);
-  return mix(GGX_EAVG[j], GGX_EAVG[j + 1], y - float(j));
+  return mix(ggx_eavg_entry(j), ggx_eavg_entry(j + 1), y - float(j));
 }

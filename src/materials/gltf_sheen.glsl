@@ -39,5 +39,5 @@ float gltf_sheen_albedo(float mu, float r) {
   int i = min(int(x), SHEEN_E_MU - 2), j = min(int(y), SHEEN_E_R - 2);
   float fx = x - float(i), fy = y - float(j);
   int k = j * SHEEN_E_MU + i;
-  return mix(mix(SHEEN_E[k], SHEEN_E[k + 1], fx), mix(SHEEN_E[k + SHEEN_E_MU], SHEEN_E[k + SHEEN_E_MU + 1], fx), fy);
+  return mix(mix(sheen_e_entry(k), sheen_e_entry(k + 1), fx), mix(sheen_e_entry(k + SHEEN_E_MU), sheen_e_entry(k + SHEEN_E_MU + 1), fx), fy);
 }

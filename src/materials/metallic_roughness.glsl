@@ -368,16 +368,11 @@ bool sample_metallic_roughness(MaterialRec m, vec3 wo, bool entering, vec3 u, ou
 #ifdef HAS_GLTF_VOLUME
       if (mr_volume(l)) {  // into (or out of) the volume: the dielectric's lobe
         float eta = mr_volume_eta(l, entering), uf = ut / p.z;
-        if (mr_smooth(l.roughness)) {  // reflect with probability F, else refract (SmoothDielectric)
+        if (mr_smooth(l.roughness)) {  // the smooth interface (smooth_interface.glsl, as SmoothDielectric)
           float scale = (1.0 - l.metallic) * l.transmission * (1.0 - mr_coat_weight(l, wo)) / ((1.0 - p.x) * (1.0 - p.y) * p.z);
-          vec3 wt;
-          if (uf < fresnel_dielectric(wo.z, eta) || !refract_local(wo, eta, wt)) {
-            s.wi = vec3(-wo.x, -wo.y, wo.z);
-            s.weight = vec3(scale * mr_sheen_scale(l, wo.z, wo.z));
-          } else {
-            s.wi = wt;
-            s.weight = m.tint * (scale * mr_sheen_scale(l, wo.z, -wt.z) / (eta * eta));
-          }
+          bool refracted = sample_smooth_interface(wo, eta, uf, s.wi);
+          float w = scale * mr_sheen_scale(l, wo.z, abs(s.wi.z));
+          s.weight = refracted ? m.tint * (w / (eta * eta)) : vec3(w);
           s.pdf = 0.0;
           s.delta = true;
           return true;

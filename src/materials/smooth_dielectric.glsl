@@ -1,9 +1,7 @@
-// SmoothDielectric: <SmoothDielectric ior="n" color="r g b"/>: glass in air. Exact
-// Fresnel picks reflection or refraction with probability F (total internal reflection
-// gives F = 1), so the weight is 1 for reflection and tint / eta^2 for refraction
-// (radiance is compressed into the denser medium: pbrt-v4, 9.5.2).
-#include "fresnel.glsl"
-#include "refract.glsl"
+// SmoothDielectric: <SmoothDielectric ior="n" color="r g b"/>: glass in air, the smooth
+// interface of smooth_interface.glsl (reflection with probability F, else refraction of
+// weight tint / eta^2).
+#include "smooth_interface.glsl"
 
 bool delta_smooth_dielectric(MaterialRec m) { return true; }
 vec3 albedo_smooth_dielectric(MaterialRec m) { return m.tint; }
@@ -19,14 +17,7 @@ bool sample_smooth_dielectric(MaterialRec m, vec3 wo, bool entering, vec3 u, out
   float f = fresnel_dielectric(wo.z, eta);
   s.pdf = 0.0;
   s.delta = true;
-  vec3 wt;
-  if (u.z < f || !refract_local(wo, eta, wt)) {
-    s.wi = vec3(-wo.x, -wo.y, wo.z);
-    s.weight = vec3(1.0);
-  } else {
-    s.wi = wt;
-    s.weight = m.tint / (eta * eta);
-  }
+  s.weight = sample_smooth_interface(wo, eta, u.z, s.wi) ? m.tint / (eta * eta) : vec3(1.0);
   return true;
 }
 

@@ -240,6 +240,7 @@ void Renderer::draw_tile(Accumulator& a, const Accumulator::Tile& t, int divisor
   // Moving spheres are bounded over [0, motion_bound].
   p.set("u_shutter", std::min(camera_.shutter, scene_.motion_bound()));
   scene_.bind(p, settings_.mode);
+  tables_.bind(p);
   a.bind_inputs(p, t);
   if (using_compute()) {
 #ifndef __EMSCRIPTEN__

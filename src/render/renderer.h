@@ -19,6 +19,7 @@
 #include "render/error_estimator.h"
 #include "render/program_cache.h"
 #include "render/scene_textures.h"
+#include "render/uniform_tables.h"
 #include "scene/scene.h"
 #include "shadergen/shadergen.h"
 
@@ -207,6 +208,7 @@ class Renderer {
   Features features_;
   bool have_scene_ = false;
   Program* integrator_ = nullptr;
+  UniformTables tables_;  // the build's tables as uniform blocks (render/uniform_tables.h)
   const ShaderSource* source_ = nullptr;
   bool compute_supported_ = false;
   long last_draw_samples_ = 0;

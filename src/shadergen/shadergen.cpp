@@ -204,7 +204,7 @@ std::string generate_prelude(const Features& features) {
       break;
     }
   if (f.image_maps()) g += "precision highp sampler2DArray;\n" + glsl_record(uv_layout()) + glsl_record(texinfo_layout());
-  g += glsl_sobol_table();
+  g += glsl_sobol_dims();
   g += "#include \"rng.glsl\"\n#include \"sampler.glsl\"\n#include \"sampling.glsl\"\n#include \"surface_types.glsl\"\n";
   for (int i = 0; i < kNumMaterialKinds; ++i)
     if (f.has(MaterialKind(i)))
