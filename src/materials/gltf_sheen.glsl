@@ -19,6 +19,7 @@ float gltf_sheen_l(float x, float alpha) {
   return a / (1.0 + b * pow(x, c)) + d * x + e;
 }
 float gltf_sheen_lambda(float c, float alpha) {
+  c = min(c, 1.0);  // a cosine that rounded above 1 would make pow's base 1 - c negative: NaN
   return c < 0.5 ? exp(gltf_sheen_l(c, alpha)) : exp(2.0 * gltf_sheen_l(0.5, alpha) - gltf_sheen_l(1.0 - c, alpha));
 }
 float gltf_sheen_roughness(float r) { return clamp(r, SHEEN_E_R_MIN, 1.0); }
