@@ -141,9 +141,8 @@ vec3 mr_ms_fresnel(MaterialRec m, float eavg) {
 }
 // (the dielectric base's weight, the metal's compensation lobe without its colour) at wo, wi
 // (cosines co, ci): (1 - E_s(co)) (1 - E_s(ci)) / (1 - E_s,avg), (1 - E(co)) (1 - E(ci)) / (pi (1 - E_avg)).
-// (llvmpipe compiles each lookup of a constant array in time proportional to its size: the
-// lookups at wo are made once per call, in mr_lobes_at, and sample_metallic_roughness
-// evaluates the BSDF at one place.)
+// (The table is a uniform block, gltf_ms.glsl; the lookups at wo are made once per call, in
+// mr_lobes_at, and sample_metallic_roughness evaluates the BSDF at one place.)
 vec2 mr_ms_weights(MrLobes l, float ci) {
   vec2 eo = l.ms_eo, ei = mr_ms_e(l, ci), ea = l.ms_eavg;
   float so = mr_layer_albedo(l, eo), si = mr_layer_albedo(l, ei), sa = mr_layer_albedo(l, ea);
