@@ -9,7 +9,7 @@ metrics.h's: mean over pixels and channels of (x - r)^2 / (r^2 + 0.01), Cycles a
 mean of each channel, and a PNG with ours left and Cycles' right (tone-mapped alike).
 
     python3 tools/cycles_compare.py [--size 160x120] [--spp 256] [--cycles-spp 256]
-        [--only mr-grid,sheen] [--out build/cycles] [--ms] [--compare-only]
+        [--only mr-grid,sheen] [--out build/cycles] [--ms] [--spec-absorption] [--compare-only]
 
 Needs Debian's blender (apt-get install blender) and a native build. Stdlib only."""
 import argparse
@@ -25,7 +25,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pfm import read_pfm  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CASES = ["mr-grid", "dielectric-grid", "maps-quad", "emissive", "transmission", "clearcoat", "sheen", "specular"]
+CASES = ["mr-grid", "dielectric-grid", "maps-quad", "emissive", "transmission", "clearcoat", "sheen", "specular", "volume"]
 SKY = 0.5
 SUN = (-0.4, -1.0, -0.5, 2.0)  # direction the light travels, irradiance
 
@@ -70,6 +70,8 @@ def main():
     ap.add_argument("--ms", action="store_true", help="multiple scattering on both sides: our Kulla-Conty compensation (--gltf-ms on) "
                     "against Cycles' MULTI_GGX; else the specification's single-scattering model on both (--gltf-ms off, GGX)")
     ap.add_argument("--compare-only", action="store_true", help="compare the images already in --out")
+    ap.add_argument("--spec-absorption", action="store_true", help="Cycles' Volume Absorption set to KHR_materials_volume's "
+                    "coefficient -ln(c) / d (Blender 3.4's importer gives (1 - c) / d: docs/gltf-cycles.md)")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     cases = a.only.split(",") if a.only else CASES
@@ -90,7 +92,7 @@ def main():
         log = "" if a.compare_only else subprocess.run(["blender", "-b", "--factory-startup", "-P", os.path.join(REPO, "tools/cycles_render.py"), "--",
                               "--gltf", gltf, "--out", theirs, "--camera", "%g %g %g %g %g" % (*pos, yaw, pitch), "--sky", str(SKY),
                               "--sun", "%g %g %g %g" % SUN, "--size", a.size, "--spp", str(a.cycles_spp), "--bounces", "8",
-                              "--distribution", "MULTI_GGX" if a.ms else "GGX"],
+                              "--distribution", "MULTI_GGX" if a.ms else "GGX", "--spec-absorption", "1" if a.spec_absorption else "0"],
                              check=True, capture_output=True, text=True, env=blender_env()).stdout
         if a.compare_only and os.path.exists(theirs + ".log"):
             log = open(theirs + ".log").read()

@@ -3,7 +3,7 @@ render of it: run inside Blender (Debian's `blender`, 3.4), never by hand:
 
     blender -b --factory-startup -P tools/cycles_render.py -- --gltf F --out F.pfm
         --camera "x y z yaw pitch" [--sky R] [--sun "dx dy dz irradiance"] [--size WxH]
-        [--spp N] [--bounces N] [--distribution GGX|MULTI_GGX]
+        [--spp N] [--bounces N] [--distribution GGX|MULTI_GGX] [--spec-absorption 0|1]
 
 Our coordinates are glTF's (+y up); Blender's importer turns them into its own (+z up) as
 (x, y, z) -> (x, -z, y), so the camera and the sun are placed through the same map. The
@@ -30,7 +30,7 @@ if not hasattr(numpy, "bool"):
 
 def args():
     a = sys.argv[sys.argv.index("--") + 1:]
-    o = {"sky": "0.5", "sun": "", "size": "160x120", "spp": "256", "bounces": "8", "distribution": "GGX"}
+    o = {"sky": "0.5", "sun": "", "size": "160x120", "spp": "256", "bounces": "8", "distribution": "GGX", "spec-absorption": "0"}
     for i in range(0, len(a), 2):
         o[a[i].lstrip("-")] = a[i + 1]
     return o
@@ -51,6 +51,19 @@ def main():
         for n in (m.node_tree.nodes if m.use_nodes else []):
             if n.type == "BSDF_PRINCIPLED":
                 n.distribution = o["distribution"]
+            # KHR_materials_volume: Blender 3.4's importer sets a Volume Absorption node of
+            # colour attenuationColor and density 1 / attenuationDistance, whose absorption
+            # is (1 - colour) density; the extension's is -ln(attenuationColor) /
+            # attenuationDistance. --spec-absorption 1 rewrites the node to the extension's:
+            # density k = max(-ln c) / d, colour 1 - (-ln c) / (k d), so (1 - colour) k = -ln(c) / d.
+            if n.bl_idname == "ShaderNodeVolumeAbsorption" and o["spec-absorption"] == "1":
+                c, d = list(n.inputs["Color"].default_value)[:3], n.inputs["Density"].default_value
+                if d > 0:
+                    sig = [-math.log(max(v, 1e-6)) * d for v in c]  # -ln(c) / distance
+                    k = max(max(sig), 1e-9)
+                    n.inputs["Density"].default_value = k
+                    n.inputs["Color"].default_value = [1.0 - v / k for v in sig] + [1.0]
+                    print("cycles_render: %s: absorption per unit length %s (the extension's)" % (m.name, " ".join("%.4g" % v for v in sig)))
     scene = bpy.context.scene
     w, h = map(int, o["size"].split("x"))
     scene.render.engine = "CYCLES"
