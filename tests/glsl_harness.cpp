@@ -99,6 +99,7 @@ GlslKernel::GlslKernel(const std::string& body, const Features& f) {
       "void main() {\n  ivec2 px = ivec2(gl_FragCoord.xy);\n  int i = px.y * " +
       std::to_string(kDataWidth) + " + px.x;\n  o_out = i < u_count ? kernel(texelFetch(u_input, px, 0), i) : vec4(0.0);\n}\n";
   program_ = Program(fullscreen_vertex(), resolve_includes(generate_prelude(f) + "#line 1\n" + body + main, "<kernel>"));
+  tables_.attach(program_);
 }
 
 void GlslKernel::bind(const char* sampler, const Texture& t) { textures_.emplace_back(sampler, &t); }
@@ -141,7 +142,7 @@ std::vector<glm::vec4> GlslKernel::run(const std::vector<glm::vec4>& inputs) {
     program_.set(textures_[k].first.c_str(), int(k) + 1);
   }
   program_.set("u_count", n);
-  tables_.bind(program_);
+  tables_.bind();
   glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
   glViewport(0, 0, kDataWidth, rows);
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -18,6 +18,7 @@
 #include "core/file_io.h"
 #include "glsl_harness.h"
 #include "render/renderer.h"
+#include "render/uniform_tables.h"
 #include "scene/xml_loader.h"
 #include "render/renderer.h"
 #include "test_paths.h"
@@ -432,6 +433,41 @@ TEST_CASE("glTF lobes: furnace sweep of white materials never above 1", "[gpu][t
       }
       std::printf("\n");
     }
+  }
+}
+
+TEST_CASE("glTF lobes: the renderer's program reads each table from its own buffer", "[gpu][gltf]") {
+  test_gl();
+  // A MetallicRoughness sphere with sheen has both uniform blocks (render/uniform_tables.h).
+  // Each must have its list index as binding point (a block left at GL's default, 0, reads
+  // the GGX table: the sheen's albedo scaling wrong, the image only a little darker), a
+  // buffer bound there, and the generated block as large as the generator's numbers.
+  const Scene s = load_scene_text("<SceneLevel><Camera position=\"0 0 5\"/><Objects><Sphere center=\"0 0 0\" radius=\"1\">"
+                                  "<MetallicRoughness sheenColor=\"0.5 0.5 0.5\"/></Sphere></Objects></SceneLevel>",
+                                  repo_path("scenes/x.xml"));
+  Renderer r;
+  r.resize(8, 8);
+  RenderSettings st;
+  st.sample_limit = 1;
+  st.spp_per_pass = 1;
+  r.set_settings(st);
+  r.set_scene(s);
+  while (!r.converged()) r.step();
+  const GLuint id = r.program_id();
+  REQUIRE(id != 0u);
+  const auto& t = uniform_tables();
+  REQUIRE(t.size() == 2);
+  for (size_t i = 0; i < t.size(); ++i) {
+    INFO(t[i].block);
+    const GLuint index = glGetUniformBlockIndex(id, t[i].block);
+    REQUIRE(index != GL_INVALID_INDEX);
+    GLint binding = -1, size = 0, buffer = 0;
+    glGetActiveUniformBlockiv(id, index, GL_UNIFORM_BLOCK_BINDING, &binding);
+    glGetActiveUniformBlockiv(id, index, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, GLuint(i), &buffer);
+    CHECK(binding == int(i));
+    CHECK(size == int(t[i].floats * sizeof(float)));
+    CHECK(buffer != 0);
   }
 }
 

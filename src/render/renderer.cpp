@@ -79,6 +79,7 @@ void Renderer::select_program() {
   ProgramCache::Entry& e = programs_.get(with_settings(features_, settings_.mode));
   integrator_ = &e.program;
   source_ = &e.source;
+  tables_.attach(e.program);
 }
 
 void Renderer::set_scene(const Scene& scene) { set_scene(scene, pack_scene(scene)); }
@@ -240,7 +241,7 @@ void Renderer::draw_tile(Accumulator& a, const Accumulator::Tile& t, int divisor
   // Moving spheres are bounded over [0, motion_bound].
   p.set("u_shutter", std::min(camera_.shutter, scene_.motion_bound()));
   scene_.bind(p, settings_.mode);
-  tables_.bind(p);
+  tables_.bind();
   a.bind_inputs(p, t);
   if (using_compute()) {
 #ifndef __EMSCRIPTEN__

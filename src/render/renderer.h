@@ -156,6 +156,7 @@ class Renderer {
   Features program_features(const Scene& scene) const { return features_for(scene, settings_.mode); }
   const ShaderSource& integrator_source() const { return *source_; }
   double compile_ms() const { return integrator_ ? integrator_->compile_ms() : 0.0; }
+  GLuint program_id() const { return integrator_ ? integrator_->id() : 0u; }  // the integrator's (tests: its uniform blocks)
   size_t programs_compiled() const { return programs_.size(); }
   // Builds started and not finished (ProgramCache::poll, pending): the page polls every frame.
   void poll_programs() { programs_.poll(); }

@@ -23,18 +23,24 @@ const std::vector<UniformTable>& uniform_tables() {
   return t;
 }
 
-void UniformTables::bind(const Program& p) {
+void UniformTables::make() {
+  if (!buffers_.empty() && !buffers_[0].stale()) return;
+  buffers_.clear();
+  for (const UniformTable& u : uniform_tables()) buffers_.emplace_back(u.data, u.floats * sizeof(float));
+}
+
+void UniformTables::attach(const Program& p) {
   const auto& t = uniform_tables();
-  if (buffers_.empty() || buffers_[0].stale()) {  // first use, or a new context
-    buffers_.clear();
-    for (const UniformTable& u : t) buffers_.emplace_back(u.data, u.floats * sizeof(float));
-  }
   for (size_t i = 0; i < t.size(); ++i) {
     const GLuint index = glGetUniformBlockIndex(p.id(), t[i].block);
     if (index != GL_INVALID_INDEX) glUniformBlockBinding(p.id(), index, GLuint(i));
-    buffers_[i].bind(int(i));
   }
   PT_GL_CHECK("glUniformBlockBinding");
+}
+
+void UniformTables::bind() {
+  make();
+  for (size_t i = 0; i < buffers_.size(); ++i) buffers_[i].bind(int(i));
 }
 
 }  // namespace pt

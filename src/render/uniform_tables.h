@@ -2,10 +2,10 @@
 // BSDF's multiple-scattering compensation; tools/gen_sheen_lut.py: the sheen albedo) as
 // uniform blocks, one list. A table a shader indexes at run time is never a constant array
 // in the GLSL: NVIDIA's compiler keeps such an array in per-invocation local memory,
-// written at the start of every invocation and read back through the cache, which cost the
-// glTF BSDF's rough lobes 20-40x on the H200 (docs/benchmarks.md, "Constant tables out of
-// local memory"). bind() gives each block of a program its binding point and binds the
-// buffers, made once per GL context.
+// written at the start of every invocation and read back through the cache, which made the
+// glTF scenes 15-19x slower on the H200 (docs/benchmarks.md, "Constant tables out of local
+// memory"). attach() gives a linked program's blocks their binding points (program state:
+// once per program); bind() binds the buffers, made once per GL context, to those points.
 #pragma once
 #include <vector>
 
@@ -23,11 +23,14 @@ const std::vector<UniformTable>& uniform_tables();
 
 class UniformTables {
  public:
-  // Before a draw with program p (in use or not): its blocks of the list get their
-  // binding points (the list's index) and every buffer is bound to its point.
-  void bind(const Program& p);
+  // Once a program is linked (and chosen): its blocks of the list get their binding
+  // points, the list's index (glUniformBlockBinding is the program's state, kept).
+  void attach(const Program& p);
+  // Before a draw: every buffer bound to its point (context state, cheap).
+  void bind();
 
  private:
+  void make();  // the buffers, on first use and in a new context
   std::vector<UniformBuffer> buffers_;
 };
 
