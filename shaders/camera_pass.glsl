@@ -49,6 +49,9 @@ layout(rgba32f, binding = 3) writeonly uniform highp image2D o_aux1_image;
 #endif
 uniform ivec2 u_origin;
 uniform ivec2 u_end;
+#ifdef PT_ADAPTIVE
+uniform int u_ordered;  // 1: a whole sweep tile by tile, the most samples first (render/adaptive.h)
+#endif
 #else
 layout(location = 0) out vec4 o_accum;
 layout(location = 1) out vec4 o_stats;
@@ -155,6 +158,16 @@ void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {
 void main() {
 #ifdef PT_COMPUTE
   ivec2 px = u_origin + ivec2(gl_GlobalInvocationID.xy);
+#ifdef PT_ADAPTIVE
+  if (u_ordered != 0) {  // tile by tile in the order of the counts' z, w (Accumulator::ordered_dispatch)
+    int per_side = u_count_tile / 8;
+    int linear = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
+    int i = linear / (per_side * per_side), sub = linear - i * per_side * per_side;
+    int w = textureSize(u_tile_counts, 0).x;
+    ivec2 tile = ivec2(texelFetch(u_tile_counts, ivec2(i % w, i / w), 0).zw);
+    px = tile * u_count_tile + 8 * ivec2(sub % per_side, sub / per_side) + ivec2(gl_LocalInvocationID.xy);
+  }
+#endif
   if (any(greaterThanEqual(px, u_end))) return;
   vec4 accum, stats;
   render_pixel(px, accum, stats);

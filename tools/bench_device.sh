@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel or gltfms}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms or adaptive}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -142,6 +142,22 @@ case "$part" in
           echo "== $(basename "$s" .xml) $k gltf-ms $ms"
           $B render "$s" --size $S --spp 100000 --seconds "${GLTFMS_SECONDS:-5}" --kernel $k --gltf-ms $ms --out /tmp/w.png | grep -E "shader|rendered|non-finite"
         done
+      done
+    done
+    ;;
+  adaptive)
+    # Adaptive sampling against uniform at equal time (issue 14, tools/adaptive_eval.py):
+    # compute kernel, 1080p, ADAPTIVE_SECONDS (10) per run, references of
+    # ADAPTIVE_REF_SECONDS (60); then each build of ADAPTIVE_OTHERS (carried binaries)
+    # adaptive only, against the same references.
+    scenes=(${ADAPTIVE_SCENES:-scenes/cornell-box.xml scenes/reference/scene0.xml scenes/seed/05-cornell-blue-yellow.xml scenes/mesh-cube.xml})
+    python3 -u tools/adaptive_eval.py --bin "$B" --size $S --kernel compute --seconds "${ADAPTIVE_SECONDS:-10}" \
+      --ref-seconds "${ADAPTIVE_REF_SECONDS:-60}" --spp 0 --repeat 1 --work "$w" --csv "$w/adaptive.csv" "${scenes[@]}"
+    for v in ${ADAPTIVE_OTHERS:-}; do
+      for s in "${scenes[@]}"; do
+        echo "== $(basename "$v") $(basename "$s" .xml) adaptive"
+        $v bench "$s" --size $S --kernel compute --seconds "${ADAPTIVE_SECONDS:-10}" --adaptive on \
+          --reference "$w/$(basename "$s" .xml)-$S-ref.pfm" --csv "$w/$(basename "$v")-$(basename "$s" .xml).csv" | grep -E "adaptive|spp/s"
       done
     done
     ;;

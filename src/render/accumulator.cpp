@@ -103,10 +103,18 @@ void Accumulator::plan_sweep() {
     next_refresh_ = std::max(samples_ + 1, int(std::ceil(samples_ * params_.refresh)));
   }
   const std::vector<int>& plan = counts_.plan(sweep_spp_, uniform, params_.max_tile_spp);
+  // x, y: tile t's count and this sweep's samples per pixel; z, w at index i (raster order
+  // of the grid): the tile the compute kernel's i-th tile of groups draws, the most
+  // samples first (ordered_dispatch, below).
   std::vector<float> texels(plan.size() * 4, 0.0f);
   for (size_t t = 0; t < plan.size(); ++t) {
     texels[t * 4] = float(counts_.counts()[t]);
     texels[t * 4 + 1] = float(plan[t]);
+  }
+  const std::vector<int> order = dispatch_order(plan);
+  for (size_t i = 0; i < order.size(); ++i) {
+    texels[i * 4 + 2] = float(order[i] % counts_.tiles_x());
+    texels[i * 4 + 3] = float(order[i] / counts_.tiles_x());
   }
   // Made once per tile grid, then updated in place each sweep.
   if (counts_tex_.width() != counts_.tiles_x() || counts_tex_.height() != counts_.tiles_y() || !counts_tex_.id())
@@ -114,6 +122,8 @@ void Accumulator::plan_sweep() {
   else
     counts_tex_.upload(texels.data());
 }
+
+bool Accumulator::ordered_dispatch(const Tile& t) const { return adaptive_ && t.whole && counts_.tile() % 8 == 0; }
 
 void Accumulator::bind_inputs(Program& p, const Tile& t) const {
   p.set("u_accum", int(kAccumUnit));

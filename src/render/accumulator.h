@@ -79,6 +79,11 @@ class Accumulator {
   GLuint current_fbo() const { return fbo_[cur_].id(); }     // the current mean (attachment 0)
   const Texture& target_radiance() const { return accum_[1 - cur_]; }
   const Texture& target_stats() const { return stats_[1 - cur_]; }
+  // Adaptive sampling in the compute kernel: a whole sweep is dispatched tile by tile in
+  // the order of dispatch_order (render/adaptive.h: the most samples first), one group of
+  // 8x8 per (tile / 8)^2 of each tile; the shader maps the linear group index through the
+  // counts texture (u_ordered). Else the groups cover the tile's rectangle in raster order.
+  bool ordered_dispatch(const Tile& t) const;
 #ifndef __EMSCRIPTEN__
   // The compute kernel's outputs: the targets as images 0 (mean), 1 (statistics), and with
   // the auxiliaries 2 and 3.

@@ -68,6 +68,13 @@ std::vector<int> allocate_sweep(const std::vector<int>& pixels, const std::vecto
   return spp;
 }
 
+std::vector<int> dispatch_order(const std::vector<int>& plan) {
+  std::vector<int> order(plan.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return plan[size_t(a)] > plan[size_t(b)]; });
+  return order;
+}
+
 void TileCounts::reset(int width, int height, int tile) {
   tile_ = tile;
   tiles_x_ = (width + tile - 1) / tile;

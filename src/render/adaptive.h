@@ -56,6 +56,14 @@ std::vector<int> allocate_sweep(const std::vector<int>& pixels, const std::vecto
 // sqrt(r_t), at least `floor` x their pixel-weighted mean; all 1 when every r_t is 0.
 std::vector<double> tile_weights(const std::vector<int>& pixels, const std::vector<double>& rel_var, double floor);
 
+// The order in which a sweep's tiles are dispatched: the most samples per pixel first,
+// ties in raster order. A GPU starts work groups roughly in index order and each keeps
+// its processor until done, so a tile of many samples started last would run on alone
+// after the rest of the sweep finished (longest processing time first: Graham 1969). On
+// the H200 the raster order let adaptive sweeps draw about half the samples of uniform
+// ones in the same time (docs/benchmarks.md).
+std::vector<int> dispatch_order(const std::vector<int>& plan);
+
 // The tile grid of an image and its counts (the accumulator's).
 class TileCounts {
  public:

@@ -125,3 +125,9 @@ TEST_CASE("adaptive: TileCounts plans uniform sweeps, then by weight", "[adaptiv
   CHECK(c.counts() == std::vector<int>{0, 0});
   CHECK(c.total() == 0.0);
 }
+
+TEST_CASE("adaptive: a sweep's tiles are dispatched the most samples first", "[adaptive]") {
+  CHECK(dispatch_order({2, 7, 0, 7, 3}) == std::vector<int>{1, 3, 4, 0, 2});  // ties in raster order
+  CHECK(dispatch_order({4, 4, 4}) == std::vector<int>{0, 1, 2});
+  CHECK(dispatch_order({}).empty());
+}

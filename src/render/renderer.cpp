@@ -248,7 +248,15 @@ void Renderer::draw_tile(Accumulator& a, const Accumulator::Tile& t, int divisor
     a.bind_images();
     p.set("u_origin", glm::ivec2(t.x0, t.y0));
     p.set("u_end", glm::ivec2(t.x1, t.y1));
-    glDispatchCompute(GLuint((t.x1 - t.x0 + 7) / 8), GLuint((t.y1 - t.y0 + 7) / 8), 1);
+    if (a.ordered_dispatch(t)) {  // tile by tile, the most samples first (render/adaptive.h)
+      const TileCounts& c = *a.tile_counts();
+      const int per_side = c.tile() / 8;
+      p.set("u_ordered", 1);
+      glDispatchCompute(GLuint(per_side * per_side * c.tiles_x()), GLuint(c.tiles_y()), 1);
+    } else {
+      if (a.adaptive()) p.set("u_ordered", 0);
+      glDispatchCompute(GLuint((t.x1 - t.x0 + 7) / 8), GLuint((t.y1 - t.y0 + 7) / 8), 1);
+    }
     PT_GL_CHECK("glDispatchCompute (integrator)");
     // What reads the images next: texelFetch (the next pass), blits and glReadPixels.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT |
