@@ -3,13 +3,34 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <thread>
 
 #include "render/renderer.h"
 #include "render/texture_units.h"
 
 namespace pt {
 
-Accumulator::Accumulator() {
+namespace {
+
+// How the compute kernel's scheduler hands out a dispatch's groups (dispatch_order in
+// render/adaptive.h): Mesa's llvmpipe gives each of its threads one contiguous run
+// (LP_NUM_THREADS, else one thread per CPU); a GPU hands them out one by one.
+int dispatch_chunks() {
+#ifdef __EMSCRIPTEN__
+  return 1;
+#else
+  const char* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!name || !std::strstr(name, "llvmpipe")) return 1;
+  if (const char* e = std::getenv("LP_NUM_THREADS")) return std::max(1, std::atoi(e));
+  return std::max(1, int(std::thread::hardware_concurrency()));
+#endif
+}
+
+}  // namespace
+
+Accumulator::Accumulator() : dispatch_chunks_(dispatch_chunks()) {
   for (GLenum fmt : {GLenum(GL_RGBA32F), GLenum(GL_RGBA16F)}) {
     Texture t(4, 4, fmt, nullptr);
     Framebuffer f(t);
@@ -111,7 +132,7 @@ void Accumulator::plan_sweep() {
     texels[t * 4] = float(counts_.counts()[t]);
     texels[t * 4 + 1] = float(plan[t]);
   }
-  const std::vector<int> order = dispatch_order(plan);
+  const std::vector<int> order = dispatch_order(plan, dispatch_chunks_);
   for (size_t i = 0; i < order.size(); ++i) {
     texels[i * 4 + 2] = float(order[i] % counts_.tiles_x());
     texels[i * 4 + 3] = float(order[i] / counts_.tiles_x());

@@ -130,6 +130,7 @@ class Accumulator {
   TileCounts counts_;
   Texture counts_tex_;     // per tile (samples so far, this sweep's samples per pixel)
   int next_refresh_ = 0;   // the mean count at which the variance is read back again
+  int dispatch_chunks_ = 1;  // the compute scheduler's runs of groups (dispatch_order)
   void plan_sweep();       // adaptive: this sweep's counts, uploaded
   int targets() const { return aux_ ? 4 : 2; }
   int width_ = 0, height_ = 0;

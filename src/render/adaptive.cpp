@@ -68,11 +68,21 @@ std::vector<int> allocate_sweep(const std::vector<int>& pixels, const std::vecto
   return spp;
 }
 
-std::vector<int> dispatch_order(const std::vector<int>& plan) {
+std::vector<int> dispatch_order(const std::vector<int>& plan, int chunks) {
   std::vector<int> order(plan.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return plan[size_t(a)] > plan[size_t(b)]; });
-  return order;
+  const size_t k = size_t(std::max(1, chunks));
+  if (k == 1) return order;
+  std::vector<std::vector<int>> dealt(k);
+  for (size_t i = 0; i < order.size(); ++i) {
+    const size_t round = i / k, j = i % k;
+    dealt[round % 2 ? k - 1 - j : j].push_back(order[i]);
+  }
+  std::vector<int> out;
+  out.reserve(order.size());
+  for (const std::vector<int>& d : dealt) out.insert(out.end(), d.begin(), d.end());
+  return out;
 }
 
 void TileCounts::reset(int width, int height, int tile) {

@@ -56,13 +56,18 @@ std::vector<int> allocate_sweep(const std::vector<int>& pixels, const std::vecto
 // sqrt(r_t), at least `floor` x their pixel-weighted mean; all 1 when every r_t is 0.
 std::vector<double> tile_weights(const std::vector<int>& pixels, const std::vector<double>& rel_var, double floor);
 
-// The order in which a sweep's tiles are dispatched: the most samples per pixel first,
-// ties in raster order. A GPU starts work groups roughly in index order and each keeps
-// its processor until done, so a tile of many samples started last would run on alone
-// after the rest of the sweep finished (longest processing time first: Graham 1969). On
-// the H200 the raster order let adaptive sweeps draw about half the samples of uniform
-// ones in the same time (docs/benchmarks.md).
-std::vector<int> dispatch_order(const std::vector<int>& plan);
+// The order in which a sweep's tiles are dispatched, for a scheduler that hands the
+// dispatch's work groups out one at a time in index order to whichever processor is free
+// (chunks = 1: a GPU), or in `chunks` contiguous runs of equal length, one per thread
+// (Mesa's llvmpipe: each thread takes groups / threads groups in a row). The tiles, the
+// most samples first (ties in raster order), are dealt to the chunks in snake order (1, 2,
+// ..., k, k, ..., 2, 1, 1, 2, ...; the chunks' lengths differ by at most one tile), so
+// each chunk gets about the same work and starts with its heaviest tiles: the longest
+// processing time first (Graham 1969). In raster order the noisy tiles bunch up: on
+// llvmpipe (2 threads) adaptive sweeps ran 15-20% slower per ray than uniform ones, and
+// on the H200 they drew about half the samples of uniform ones in the same time
+// (docs/benchmarks.md).
+std::vector<int> dispatch_order(const std::vector<int>& plan, int chunks = 1);
 
 // The tile grid of an image and its counts (the accumulator's).
 class TileCounts {

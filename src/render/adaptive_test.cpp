@@ -130,4 +130,7 @@ TEST_CASE("adaptive: a sweep's tiles are dispatched the most samples first", "[a
   CHECK(dispatch_order({2, 7, 0, 7, 3}) == std::vector<int>{1, 3, 4, 0, 2});  // ties in raster order
   CHECK(dispatch_order({4, 4, 4}) == std::vector<int>{0, 1, 2});
   CHECK(dispatch_order({}).empty());
+  // Two threads taking half each: the heaviest and the lightest with the next two between.
+  CHECK(dispatch_order({2, 7, 0, 7, 3, 1}, 2) == std::vector<int>{1, 0, 5, 3, 4, 2});  // 7+2+1 | 7+3+0
+  CHECK(dispatch_order({5, 4, 3}, 4) == std::vector<int>{0, 1, 2});                     // more chunks than tiles
 }
