@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|fragment
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms or adaptive}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive or fragment}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -158,6 +158,25 @@ case "$part" in
         echo "== $(basename "$v") $(basename "$s" .xml) adaptive"
         $v bench "$s" --size $S --kernel compute --seconds "${ADAPTIVE_SECONDS:-10}" --adaptive on \
           --reference "$w/$(basename "$s" .xml)-$S-ref.pfm" --csv "$w/$(basename "$v")-$(basename "$s" .xml).csv" | grep -E "adaptive|spp/s"
+      done
+    done
+    ;;
+  fragment)
+    # The fragment pass (the page's) of builds side by side (FRAGMENT_BUILDS, carried):
+    # each scene at 1080p for FRAGMENT_SECONDS (5), the BVH forced (a traversal change is
+    # measured where it runs), builds interleaved per scene; then 16 spp of each build
+    # compared byte for byte with the first's.
+    for s in ${FRAGMENT_SCENES:-scenes/reference/scene2.xml scenes/cornell-box.xml scenes/reference/scene0.xml scenes/bench/million.xml}; do
+      n=$(basename "$s" .xml)
+      for v in ${FRAGMENT_BUILDS:?builds}; do
+        echo "== $(basename "$v") $n fragment bvh"
+        timeout 120 $v render "$s" --size $S --spp 100000 --seconds "${FRAGMENT_SECONDS:-5}" --kernel fragment --accel bvh --out /tmp/w.png |
+          grep --line-buffered -E "shader|rendered|non-finite"
+        timeout 120 $v render "$s" --size 640x360 --spp 16 --spp-per-pass 4 --kernel fragment --accel bvh --out "$w/$n-$(basename "$v").pfm" >/dev/null
+      done
+      first=$(set -- ${FRAGMENT_BUILDS}; basename "$1")
+      for v in ${FRAGMENT_BUILDS}; do
+        cmp -s "$w/$n-$first.pfm" "$w/$n-$(basename "$v").pfm" && echo "$n 16 spp: $(basename "$v") identical to $first" || echo "$n 16 spp: $(basename "$v") DIFFERS from $first"
       done
     done
     ;;

@@ -100,19 +100,24 @@ std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::ve
 }
 
 std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
-                                   const std::vector<float>* snapshot, int width, int height, const PixelCounts& now,
-                                   const PixelCounts* then, double exponent, int tile) {
+                                   const std::vector<SnapshotView>& snapshots, int width, int height, const PixelCounts& now,
+                                   double exponent, int tile) {
   const int tx = (width + tile - 1) / tile, ty = (height + tile - 1) / tile;
   std::vector<ErrorSums> tiles(size_t(tx) * ty);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const size_t p = (size_t(y) * width + x) * 4;
-      const int n = now.at(x, y), k = snapshot && then ? then->at(x, y) : 0;
-      const bool snap = k > 0 && 2 * k <= n;
+      const int n = now.at(x, y);
+      int k = 0;
+      const std::vector<float>* snap = nullptr;
+      for (const SnapshotView& v : snapshots) {
+        const int kv = v.counts.at(x, y);
+        if (kv > k && 2 * kv <= n) k = kv, snap = v.mean;
+      }
       const double scale = snap ? 1.0 / (std::pow(double(n) / k, exponent) - 1.0) : 0.0;
       ErrorSums& t = tiles[size_t(y / tile) * tx + x / tile];
       for (int c = 0; c < 3; ++c) {
-        ErrorSums e = error_terms(mean[p + c], variance[p + c], n, snap ? (*snapshot)[p + c] : 0.0);
+        ErrorSums e = error_terms(mean[p + c], variance[p + c], n, snap ? (*snap)[p + c] : 0.0);
         e.diff = snap ? e.diff * scale : e.iid;
         t += e;
       }

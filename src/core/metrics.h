@@ -85,19 +85,26 @@ std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::ve
                                    const std::vector<float>* snapshot, int width, int height, int samples, int tile = 32);
 
 // Adaptive sampling (render/adaptive.h): each pixel has the count of its tile of counts.
-// The same estimate with each pixel's own n, and with the snapshot's own k per pixel: the
-// snapshot's term is scaled per pixel, D / ((n/k)^a - 1), where 2k <= n; a pixel without
-// such a snapshot puts its iid term in both sums (it counts as iid's estimate). With
-// every count equal this is error_tiles and combine_error above, term for term. The
-// exponent a: the caller's (ErrorHistory, recorded while the counts were still equal).
+// The same estimate with each pixel's own n, and with a snapshot's own k per pixel: the
+// snapshot's term is scaled per pixel, D / ((n/k)^a - 1), where 2k <= n. Of several
+// snapshots (taken at the image's mean count 1, 2, 4, ...: a tile sampled at the floor
+// doubles its count only when the mean grew several times), each pixel takes the latest
+// with 2k <= n; a pixel without one puts its iid term in both sums (it counts as iid's
+// estimate). With every count equal and one snapshot this is error_tiles and
+// combine_error above, term for term. The exponent a: the caller's (ErrorHistory,
+// recorded while the counts were still equal).
 struct PixelCounts {
   int tile = 1, tiles_x = 1;
   const std::vector<int>* n = nullptr;  // per tile, rows bottom to top
   int at(int x, int y) const { return (*n)[std::size_t(y / tile) * tiles_x + x / tile]; }
 };
+struct SnapshotView {
+  const std::vector<float>* mean = nullptr;  // RGBA, rows bottom to top
+  PixelCounts counts;                        // each pixel's count then
+};
 std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
-                                   const std::vector<float>* snapshot, int width, int height, const PixelCounts& now,
-                                   const PixelCounts* then, double exponent, int tile = 32);
+                                   const std::vector<SnapshotView>& snapshots, int width, int height, const PixelCounts& now,
+                                   double exponent, int tile = 32);
 // combine_error of those sums (their snapshot terms already scaled): `samples` the mean
 // count (known from 2), `snapshot` whether one was used.
 ErrorEstimate combine_error_scaled(const std::vector<ErrorSums>& tiles, int tiles_x, int tiles_y, int tile, int samples, bool snapshot,

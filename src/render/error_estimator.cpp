@@ -34,14 +34,33 @@ std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot
   const int w = a.width(), h = a.height();
   std::vector<float> mean, var;
   a.read_mean_variance(mean, var);
+  if (const TileCounts* c = a.tile_counts()) {
+    // Each tile of counts takes the latest snapshot at half its count or less: only
+    // those snapshots are read back.
+    const std::vector<int>& n = c->counts();
+    std::vector<bool> used(kSnapshots, false);
+    const bool current = a.epoch() == epoch_ && w == width_ && h == height_;  // else they are another image's
+    for (size_t t = 0; t < n.size() && current; ++t) {
+      int best = -1;
+      for (int i = 0; i < kSnapshots; ++i) {
+        const Snapshot& q = snaps_[i];
+        if (q.samples > 0 && q.counts.size() == n.size() && 2 * q.counts[t] <= n[t] && q.counts[t] > 0 &&
+            (best < 0 || q.counts[t] > snaps_[best].counts[t]))
+          best = i;
+      }
+      if (best >= 0) used[size_t(best)] = true;
+    }
+    std::vector<std::vector<float>> images(kSnapshots);
+    std::vector<SnapshotView> views;
+    for (int i = 0; i < kSnapshots; ++i) {
+      if (!used[size_t(i)]) continue;
+      images[size_t(i)] = read_rgba_float(snaps_[i].fbo.id(), 0, w, h);
+      views.push_back({&images[size_t(i)], PixelCounts{c->tile(), c->tiles_x(), &snaps_[i].counts}});
+    }
+    return error_tiles(mean, var, views, w, h, PixelCounts{c->tile(), c->tiles_x(), &n}, history_.exponent(), kTile);
+  }
   std::vector<float> snap;
   if (s) snap = read_rgba_float(s->fbo.id(), 0, w, h);
-  if (const TileCounts* c = a.tile_counts()) {
-    if (s && s->counts.size() != c->counts().size()) s = nullptr;  // not taken with these tiles
-    const PixelCounts now{c->tile(), c->tiles_x(), &c->counts()};
-    const PixelCounts then{c->tile(), c->tiles_x(), s ? &s->counts : nullptr};
-    return error_tiles(mean, var, s ? &snap : nullptr, w, h, now, s ? &then : nullptr, history_.exponent(), kTile);
-  }
   return error_tiles(mean, var, s ? &snap : nullptr, w, h, a.samples(), kTile);
 }
 
@@ -70,7 +89,7 @@ void ErrorEstimator::sweep_done(const Accumulator& a) {
   s.samples = n;
   if (const TileCounts* c = a.tile_counts()) s.counts = c->counts();
   else s.counts.clear();
-  older_ = 1 - older_;
+  older_ = (older_ + 1) % kSnapshots;
   while (next_ <= n) next_ *= 2;
 }
 
@@ -78,8 +97,8 @@ ErrorEstimate ErrorEstimator::estimate(const Accumulator& a) const {
   const bool current = a.epoch() == epoch_ && a.width() == width_ && a.height() == height_;
   const Snapshot* s = current ? usable(a.samples()) : nullptr;
   const int tx = (a.width() + kTile - 1) / kTile, ty = (a.height() + kTile - 1) / kTile;
-  if (a.tile_counts() && s && s->counts.size() == a.tile_counts()->counts().size())
-    return combine_error_scaled(sums(a, s), tx, ty, kTile, a.samples(), true, current ? history_.exponent() : 1.0);
+  if (a.tile_counts() && current)  // the snapshots' terms scaled per pixel (or iid's where none fits)
+    return combine_error_scaled(sums(a, s), tx, ty, kTile, a.samples(), true, history_.exponent());
   return combine_error(sums(a, s), tx, ty, kTile, a.samples(), s ? s->samples : 0, current ? history_.exponent() : 1.0);
 }
 

@@ -36,8 +36,14 @@ class ErrorEstimator {
   void reset(const Accumulator& a);
   const Snapshot* usable(int samples) const;  // the latest with samples <= n/2
   std::vector<ErrorSums> sums(const Accumulator& a, const Snapshot* s) const;
-  Snapshot snaps_[2];
-  int older_ = 0;  // the slot the next snapshot replaces
+  // Snapshots at the last kSnapshots powers of two of the mean count: uniform sampling
+  // uses the latest at n/2 or less (one of the last two); adaptive sampling lets each
+  // tile of counts take the latest at half its own count or less (core/metrics.h), and a
+  // tile held at the floor (render/adaptive.h: a quarter of the mean count) doubles its
+  // count only while the mean grows four- to eightfold.
+  static constexpr int kSnapshots = 4;
+  Snapshot snaps_[kSnapshots];
+  int older_ = 0;  // the slot the next snapshot replaces (the oldest)
   int next_ = 1;   // the sample count of the next snapshot
   int epoch_ = -1, width_ = 0, height_ = 0;
   ErrorHistory history_;
