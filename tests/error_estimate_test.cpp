@@ -122,3 +122,37 @@ TEST_CASE("error estimate: tiles and the image agree, and there is no estimate b
   CHECK(e.rel_mse == Approx((32.0 * lo + 8.0 * hi) / 40.0));
   CHECK_FALSE(combine_error(error_tiles(mean, var, nullptr, w, h, 1), 2, 2, 32, 1, 0, 1.0).known);
 }
+
+TEST_CASE("error estimate: the decay's exponent from two snapshots per pixel at unequal counts", "[error]") {
+  // Pixels whose differences from their snapshots are exactly the model's, T(k) - T(n)
+  // with T(n) = c n^-a, at counts and snapshot counts that differ per tile (adaptive
+  // sampling): the exponent must come back whatever the ratios are.
+  const int w = 8, h = 4, tile = 2, tiles_x = w / tile;
+  for (double a : {0.8, 1.0, 1.6}) {
+    std::vector<int> n(8), k1(8), k2(8);
+    for (int t = 0; t < 8; ++t) {
+      n[size_t(t)] = 64 + 37 * t;
+      k1[size_t(t)] = n[size_t(t)] / (2 + t % 3);  // n / k1 from 2 to 4
+      k2[size_t(t)] = k1[size_t(t)] / (2 + t % 2);
+    }
+    const PixelCounts now{tile, tiles_x, &n};
+    std::vector<float> mean(size_t(w) * h * 4, 0.0f), s1 = mean, s2 = mean;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const double c = 0.5 + 0.1 * (x + y);  // each pixel its own constant
+        const double N = now.at(x, y), K1 = k1[size_t(y / tile) * tiles_x + x / tile], K2 = k2[size_t(y / tile) * tiles_x + x / tile];
+        for (int ch = 0; ch < 3; ++ch) {
+          const size_t p = (size_t(y) * w + x) * 4 + ch;
+          mean[p] = 1.0f;
+          const double den = 1.0 + 0.01;
+          s1[p] = float(1.0 + std::sqrt(c * den * (std::pow(K1, -a) - std::pow(N, -a))));
+          s2[p] = float(1.0 - std::sqrt(c * den * (std::pow(K2, -a) - std::pow(N, -a))));
+        }
+      }
+    const std::vector<SnapshotView> views{{&s2, PixelCounts{tile, tiles_x, &k2}}, {&s1, PixelCounts{tile, tiles_x, &k1}}};
+    INFO("a = " << a);
+    CHECK(snapshot_exponent(mean, views, w, h, now, 7.0) == Approx(a).margin(2e-3));
+    // One snapshot only: no pairs, the fallback.
+    CHECK(snapshot_exponent(mean, {views[1]}, w, h, now, 7.0) == 7.0);
+  }
+}

@@ -99,6 +99,53 @@ std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::ve
   return tiles;
 }
 
+double snapshot_exponent(const std::vector<float>& mean, const std::vector<SnapshotView>& snapshots, int width, int height,
+                         const PixelCounts& now, double fallback) {
+  struct Pair {
+    double d1, r1, d2, r2;
+  };
+  std::vector<Pair> pairs;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const int n = now.at(x, y);
+      int k1 = 0, k2 = 0;
+      const std::vector<float>*s1 = nullptr, *s2 = nullptr;
+      for (const SnapshotView& v : snapshots) {
+        const int k = v.counts.at(x, y);
+        if (k > k1 && 2 * k <= n) k1 = k, s1 = v.mean;
+      }
+      for (const SnapshotView& v : snapshots) {
+        const int k = v.counts.at(x, y);
+        if (k > k2 && 2 * k <= k1) k2 = k, s2 = v.mean;
+      }
+      if (!s1 || !s2) continue;
+      const size_t p = (size_t(y) * width + x) * 4;
+      double d1 = 0, d2 = 0;
+      for (int c = 0; c < 3; ++c) {
+        d1 += error_terms(mean[p + c], 0.0, n, (*s1)[p + c]).diff;
+        d2 += error_terms(mean[p + c], 0.0, n, (*s2)[p + c]).diff;
+      }
+      pairs.push_back({d1, double(n) / k1, d2, double(n) / k2});
+    }
+  if (pairs.size() * 8 < size_t(width) * height) return fallback;
+  auto f = [&](double a) {
+    double t1 = 0, t2 = 0;
+    for (const Pair& q : pairs) {
+      t1 += q.d1 / (std::pow(q.r1, a) - 1.0);
+      t2 += q.d2 / (std::pow(q.r2, a) - 1.0);
+    }
+    return t1 - t2;
+  };
+  double lo = 0.5, hi = 3.0;
+  if (!(f(lo) < 0)) return lo;
+  if (!(f(hi) > 0)) return hi;
+  for (int i = 0; i < 30; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (f(mid) < 0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
                                    const std::vector<SnapshotView>& snapshots, int width, int height, const PixelCounts& now,
                                    double exponent, int tile) {

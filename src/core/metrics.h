@@ -105,6 +105,17 @@ struct SnapshotView {
 std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
                                    const std::vector<SnapshotView>& snapshots, int width, int height, const PixelCounts& now,
                                    double exponent, int tile = 32);
+// The exponent a under adaptive sampling, where the image's D(n/2, n) over time is not one
+// curve (each tile doubles at its own pace): from one moment, each pixel's two latest
+// snapshots with 2 k1 <= n and 2 k2 <= k1. Under T(n) = c n^-a both
+//   T1(a) = sum D1 / ((n/k1)^a - 1)   and   T2(a) = sum D2 / ((n/k2)^a - 1)
+// estimate the same T(n); a is where they agree (with every count equal, r1 = 2, r2 = 4:
+// 2^a = D2/D1 - 1). T1 - T2 goes from negative to positive as a grows (the nearer
+// snapshot's difference is the smaller), so the root is found by bisection in [0.5, 3]
+// (clamped there, as ErrorHistory). Returns `fallback` when fewer than 1/8 of the pixels
+// have two such snapshots.
+double snapshot_exponent(const std::vector<float>& mean, const std::vector<SnapshotView>& snapshots, int width, int height,
+                         const PixelCounts& now, double fallback);
 // combine_error of those sums (their snapshot terms already scaled): `samples` the mean
 // count (known from 2), `snapshot` whether one was used.
 ErrorEstimate combine_error_scaled(const std::vector<ErrorSums>& tiles, int tiles_x, int tiles_y, int tile, int samples, bool snapshot,

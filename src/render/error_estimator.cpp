@@ -30,7 +30,7 @@ const ErrorEstimator::Snapshot* ErrorEstimator::usable(int samples) const {
   return best;
 }
 
-std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot* s) const {
+std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot* s, double* exponent) const {
   const int w = a.width(), h = a.height();
   std::vector<float> mean, var;
   a.read_mean_variance(mean, var);
@@ -40,15 +40,21 @@ std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot
     const std::vector<int>& n = c->counts();
     std::vector<bool> used(kSnapshots, false);
     const bool current = a.epoch() == epoch_ && w == width_ && h == height_;  // else they are another image's
+    // (and the one before it, at half that or less, for the exponent: snapshot_exponent)
     for (size_t t = 0; t < n.size() && current; ++t) {
-      int best = -1;
-      for (int i = 0; i < kSnapshots; ++i) {
-        const Snapshot& q = snaps_[i];
-        if (q.samples > 0 && q.counts.size() == n.size() && 2 * q.counts[t] <= n[t] && q.counts[t] > 0 &&
-            (best < 0 || q.counts[t] > snaps_[best].counts[t]))
-          best = i;
+      int half = n[t];
+      for (int pick = 0; pick < 2; ++pick) {
+        int best = -1;
+        for (int i = 0; i < kSnapshots; ++i) {
+          const Snapshot& q = snaps_[i];
+          if (q.samples > 0 && q.counts.size() == n.size() && 2 * q.counts[t] <= half && q.counts[t] > 0 &&
+              (best < 0 || q.counts[t] > snaps_[best].counts[t]))
+            best = i;
+        }
+        if (best < 0) break;
+        used[size_t(best)] = true;
+        half = snaps_[best].counts[t];
       }
-      if (best >= 0) used[size_t(best)] = true;
     }
     std::vector<std::vector<float>> images(kSnapshots);
     std::vector<SnapshotView> views;
@@ -57,7 +63,10 @@ std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot
       images[size_t(i)] = read_rgba_float(snaps_[i].fbo.id(), 0, w, h);
       views.push_back({&images[size_t(i)], PixelCounts{c->tile(), c->tiles_x(), &snaps_[i].counts}});
     }
-    return error_tiles(mean, var, views, w, h, PixelCounts{c->tile(), c->tiles_x(), &n}, history_.exponent(), kTile);
+    const PixelCounts now{c->tile(), c->tiles_x(), &n};
+    const double decay = snapshot_exponent(mean, views, w, h, now, history_.exponent());
+    if (exponent) *exponent = decay;
+    return error_tiles(mean, var, views, w, h, now, decay, kTile);
   }
   std::vector<float> snap;
   if (s) snap = read_rgba_float(s->fbo.id(), 0, w, h);
@@ -97,8 +106,11 @@ ErrorEstimate ErrorEstimator::estimate(const Accumulator& a) const {
   const bool current = a.epoch() == epoch_ && a.width() == width_ && a.height() == height_;
   const Snapshot* s = current ? usable(a.samples()) : nullptr;
   const int tx = (a.width() + kTile - 1) / kTile, ty = (a.height() + kTile - 1) / kTile;
-  if (a.tile_counts() && current)  // the snapshots' terms scaled per pixel (or iid's where none fits)
-    return combine_error_scaled(sums(a, s), tx, ty, kTile, a.samples(), true, history_.exponent());
+  if (a.tile_counts() && current) {  // the snapshots' terms scaled per pixel (or iid's where none fits)
+    double exponent = history_.exponent();
+    const std::vector<ErrorSums> t = sums(a, s, &exponent);
+    return combine_error_scaled(t, tx, ty, kTile, a.samples(), true, exponent);
+  }
   return combine_error(sums(a, s), tx, ty, kTile, a.samples(), s ? s->samples : 0, current ? history_.exponent() : 1.0);
 }
 

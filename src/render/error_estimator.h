@@ -35,7 +35,9 @@ class ErrorEstimator {
   };
   void reset(const Accumulator& a);
   const Snapshot* usable(int samples) const;  // the latest with samples <= n/2
-  std::vector<ErrorSums> sums(const Accumulator& a, const Snapshot* s) const;
+  // The tiles' sums with snapshot s (uniform sampling) or each tile's own (adaptive:
+  // then *exponent, if given, is the decay's exponent measured from the snapshots).
+  std::vector<ErrorSums> sums(const Accumulator& a, const Snapshot* s, double* exponent = nullptr) const;
   // Snapshots at the last kSnapshots powers of two of the mean count: uniform sampling
   // uses the latest at n/2 or less (one of the last two); adaptive sampling lets each
   // tile of counts take the latest at half its own count or less (core/metrics.h), and a
