@@ -42,6 +42,7 @@ int bvh_entry(NodeRec n) { return n.count == 0 ? n.first : -1 - (n.first * 16 + 
 
 void bvh_prim(int i, Ray r, RayPre pre, int skip, inout Hit h) {
   PrimRec p = load_prim(i);
+  COUNT_OPS(g_prim_tests, 1);
   float before = h.t;
 #ifdef HAS_HIT_CUTS
   Hit kept = h;
@@ -106,6 +107,7 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
   if ((any_hit && h.id >= 0) || u_num_nodes == 0) return h;
   vec3 inv = 1.0 / mix(r.d, vec3(1e-30), equal(r.d, vec3(0.0)));
   NodeRec root = load_node(0);
+  COUNT_OPS(g_box_tests, 1);
   if (bvh_box_entry(root.lo, root.hi, bvh_node_origin(root, r.o), inv, h.t) == T_INF) return h;
   BVH_STACK_DECL
   int sp = 0;
@@ -114,6 +116,7 @@ Hit trace_scene(Ray r, float tmax, bool any_hit, int skip) {
     if (cur >= 0) {
       NodeRec a = load_node(cur);
       NodeRec b = load_node(cur + 1);
+      COUNT_OPS(g_box_tests, 2);
       float ta = bvh_box_entry(a.lo, a.hi, bvh_node_origin(a, r.o), inv, h.t);
       float tb = bvh_box_entry(b.lo, b.hi, bvh_node_origin(b, r.o), inv, h.t);
       // (Entries, not records, in the selections: WebGL has no ?: on structures.)

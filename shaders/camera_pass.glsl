@@ -102,6 +102,9 @@ void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {
   vec3 w_mean = vec3(0.0), w_m2 = vec3(0.0);  // Welford: this pass's mean and squared deviations
   float bad = 0.0;
   g_rays = 0;
+#ifdef PT_COUNT_OPS
+  g_box_tests = g_prim_tests = 0;
+#endif
   for (int s = 0; s < spp; ++s) {
     sampler_init(uvec2(px), uint(base + s));
     vec4 u_cam = next4();  // xy: position in the pixel (box filter); zw: lens
@@ -147,6 +150,9 @@ void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {
   vec3 var = mix(s_old, s_pass, blend) + blend * (1.0 - blend) * dm * dm;
   accum = vec4(blend >= 1.0 ? cur : mix(prev.rgb, cur, blend), var.b);
   stats = vec4(prev_stats.xy + vec2(bad, float(g_rays)), var.rg);
+#ifdef PT_COUNT_OPS
+  stats.zw = prev_stats.zw + vec2(float(g_box_tests), float(g_prim_tests));  // not the variance
+#endif
 #ifdef PT_AUX
   aux0 /= float(spp);
   aux1 /= float(spp);

@@ -13,6 +13,12 @@ struct Ray { vec3 o; vec3 d; };
 struct Hit { float t; int id; vec3 n; vec3 p; int prim; };
 Hit no_hit() { return Hit(T_INF, -1, vec3(0.0), vec3(0.0), -1); }
 
+#ifdef PT_COUNT_OPS
+int g_box_tests, g_prim_tests;  // this fragment's traversal work (render --count-ops)
+#define COUNT_OPS(counter, n) counter += (n)
+#else
+#define COUNT_OPS(counter, n)
+#endif
 int g_rays;    // rays cast by this fragment (counted in trace_scene)
 float g_time = 0.0;  // the camera sample's time in the shutter interval (motion blur; 0 in tests of a part)
 

@@ -151,9 +151,14 @@ int run_render(const Options& o) {
               double(r.samples()) * o.width * o.height / secs * 1e-6, counters.rays / secs * 1e-6);
   std::printf("mean radiance: %.6f %.6f %.6f; non-finite samples: %.0f, pixels: %ld\n", st.mean.x, st.mean.y, st.mean.z,
               counters.bad_samples, st.bad);
+  if (settings.count_ops)
+    std::printf("traversal per ray: %.3f box tests, %.3f primitive tests (%.4g rays)\n", counters.box_tests / counters.rays,
+                counters.prim_tests / counters.rays, counters.rays);
   const ErrorEstimate est = r.estimate_error();
   if (reached) std::printf("target relMSE %.4g reached\n", o.target_relmse);
-  if (est.known)
+  if (settings.count_ops)
+    std::printf("estimated relMSE: not kept (--count-ops holds the counts in its place)\n");
+  else if (est.known)
     std::printf("estimated relMSE: %.4g (the worst %dx%d tile: %.4g; from the per-pixel variance alone: %.4g)\n", est.rel_mse, est.tile,
                 est.tile, *std::max_element(est.tiles.begin(), est.tiles.end()), est.rel_mse_iid);
   else

@@ -51,6 +51,8 @@ const char* const kUsage =
     "        --out-aux PREFIX writes PREFIX-albedo.pfm, PREFIX-normal.pfm, PREFIX-depth.pfm (implies --denoise);\n"
     "        --out-spp FILE.pfm: each pixel's sample count (with --adaptive on, its tile's)\n"
     "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L (default 5,1,128,4: SVGF's) for tuning\n"
+    "        --count-ops: count the traversal's box and primitive tests and print them per ray (a\n"
+    "        program of its own, in place of the variance: no estimate, adaptive sampling or denoiser)\n"
     "watch:  re-loads SCENE.xml when it or a file it references changes and re-renders to --out,\n"
     "        replaced atomically at 1, 2, 4, ... spp; a broken edit prints file:line and keeps the last image\n"
     "bench:  renders for S seconds; at 1, 2, 4, ... spp records time, relMSE and RMSE\n"
@@ -129,6 +131,8 @@ Options parse_options(int argc, char** argv, bool bench) {
       const std::string v = next();
       if (v != "on" && v != "off") usage_error("--adaptive takes on or off");
       o.settings.adaptive = v == "on";
+    } else if (!bench && a == "--count-ops") {
+      o.settings.count_ops = true;
     } else if (!bench && a == "--out-spp") {
       o.out_spp = next();
     } else if (a == "--env") {
@@ -176,6 +180,8 @@ Options parse_options(int argc, char** argv, bool bench) {
     }
   }
   if (o.outs.empty()) o.outs.push_back("out.png");
+  if (o.settings.count_ops && (o.settings.adaptive || o.settings.aux || o.target_relmse > 0))
+    usage_error("--count-ops replaces the variance: not with --adaptive on, --target-relmse or the denoiser");
   return o;
 }
 

@@ -251,6 +251,7 @@ RenderCounters Accumulator::counters() const {
   for (size_t i = 0; i < px.size(); i += 4) {
     c.bad_samples += px[i];
     c.rays += px[i + 1];
+    if (count_ops_) c.box_tests += px[i + 2], c.prim_tests += px[i + 3];
   }
   return c;
 }

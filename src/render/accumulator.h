@@ -22,6 +22,10 @@ struct RenderSettings;
 struct RenderCounters {
   double bad_samples = 0;  // NaN/Inf samples (dropped from the estimate)
   double rays = 0;         // every ray cast: camera, bounce and shadow
+  // With RenderSettings::count_ops (else 0): ray-box tests (two per interior node visited,
+  // one for the root) and ray-primitive tests, every ray's. Each pixel's sum is a float:
+  // exact up to 2^24 tests per pixel.
+  double box_tests = 0, prim_tests = 0;
 };
 
 class Accumulator {
@@ -58,6 +62,8 @@ class Accumulator {
   // PT_ADAPTIVE reading them (bind_inputs). A change restarts.
   void set_adaptive(bool on);
   bool adaptive() const { return adaptive_; }
+  // The statistics' z and w hold the traversal's counts (RenderSettings::count_ops).
+  void set_count_ops(bool on) { count_ops_ = on; }
   // With adaptive(): each tile's count (a tile of counts().tile() pixels), null when off.
   const TileCounts* tile_counts() const { return adaptive_ ? &counts_ : nullptr; }
   // The pixel-samples drawn since the restart (every pixel's count, summed).
@@ -126,6 +132,7 @@ class Accumulator {
   bool needs_clear_ = true;
   bool aux_ = false;
   bool adaptive_ = false;
+  bool count_ops_ = false;
   AdaptiveParams params_;
   TileCounts counts_;
   Texture counts_tex_;     // per tile (samples so far, this sweep's samples per pixel)

@@ -54,10 +54,10 @@ std::vector<std::string> ProgramCache::pending() const {
 
 std::string describe(const Features& f) {
   char text[192];
-  std::snprintf(text, sizeof text, "shapes %#x materials %#x lights %#x punctual %#x material features %#x mode %d%s%s%s%s%s%s",
+  std::snprintf(text, sizeof text, "shapes %#x materials %#x lights %#x punctual %#x material features %#x mode %d%s%s%s%s%s%s%s",
                 unsigned(f.shapes), unsigned(f.materials), unsigned(f.lights), unsigned(f.punctual), unsigned(f.material_features),
                 int(f.mode), f.env_map ? " env" : "", f.motion ? " motion" : "", f.compute ? " compute" : "", f.aux ? " aux" : "",
-                f.adaptive ? " adaptive" : "", f.flat ? " flat" : "");
+                f.adaptive ? " adaptive" : "", f.flat ? " flat" : "", f.count_ops ? " count-ops" : "");
   return text;
 }
 

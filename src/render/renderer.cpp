@@ -66,6 +66,7 @@ Features Renderer::with_settings(Features f, RenderMode mode) const {
   f.compute = using_compute();
   f.aux = settings_.aux;
   f.adaptive = settings_.adaptive;
+  f.count_ops = settings_.count_ops;
   if (settings_.accel != Accel::Auto) f.flat = settings_.accel == Accel::Flat;  // else the scene's rule (scene_features)
   if (!settings_.gltf_ms) f.material_features &= ~feature_bit(MaterialFeature::GltfMs);  // the spec's single scattering
   return f;
@@ -156,10 +157,11 @@ void Renderer::set_settings(const RenderSettings& s) {
   a.coarse = b.coarse;  // what the display shows first, not the full-resolution estimate
   if (!(a == b)) restart();
   const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute || s.aux != settings_.aux || s.adaptive != settings_.adaptive ||
-                        s.accel != settings_.accel;
+                        s.accel != settings_.accel || s.count_ops != settings_.count_ops;
   settings_ = s;
   accum_.set_aux(s.aux);
   accum_.set_adaptive(s.adaptive);
+  accum_.set_count_ops(s.count_ops);
   for (Accumulator& c : coarse_) c.set_aux(s.aux);  // the same program draws them
   if (new_mode && have_scene_) {
     select_program();

@@ -45,6 +45,10 @@ struct RenderSettings {
   // The glTF BSDF's multiple-scattering energy compensation (materials/gltf_ms.glsl; on by
   // default); off renders the specification's single-scattering model (for comparisons).
   bool gltf_ms = true;
+  // The traversal's work counted per pixel (box tests, primitive tests: RenderCounters) in
+  // place of the red and green variance, so the error estimate means nothing then; for
+  // operation counts (`render --count-ops`, docs/benchmarks.md), never for images.
+  bool count_ops = false;
   // The coarse first image (render/coarse.h): after each restart, sweeps at 1/8, 1/4 and
   // 1/2 of each axis into targets of their own, shown until the first full-resolution
   // sweep is complete. The page's; off for the command line (its output stays the same).

@@ -194,6 +194,7 @@ std::string generate_prelude(const Features& features) {
   if (f.aux) g += "#define PT_AUX 1\n";
   if (f.adaptive) g += "#define PT_ADAPTIVE 1\n";
   if (f.flat) g += "#define HAS_FLAT 1\n";
+  if (f.count_ops) g += "#define PT_COUNT_OPS 1\n";
   g += "#include \"common.glsl\"\n";
   g += glsl_record(shape_layout()) + glsl_record(material_glsl()) + glsl_record(light_layout());
   if (!f.flat) g += glsl_record(node_layout());  // flat: no traversal reads a node (bvh.glsl)
