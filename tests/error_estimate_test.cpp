@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -155,4 +156,42 @@ TEST_CASE("error estimate: the decay's exponent from two snapshots per pixel at 
     // One snapshot only: no pairs, the fallback.
     CHECK(snapshot_exponent(mean, {views[1]}, w, h, now, 7.0) == 7.0);
   }
+}
+
+TEST_CASE("error estimate under adaptive sampling at 1920x1080 takes well under a second", "[.serial][error]") {
+  // The estimate's CPU side at the CLI's and bench's size, with per-tile counts (as
+  // adaptive sampling leaves them) and two snapshots: pow() per pixel in the exponent's
+  // bisection took seconds here and starved the H200 (16 spp in 5 s against 644 before);
+  // per run of equal counts it is a pass over the pixels.
+  const int w = 1920, h = 1080, tile = 32, tiles_x = (w + tile - 1) / tile, tiles_y = (h + tile - 1) / tile;
+  std::vector<int> n(size_t(tiles_x) * tiles_y), k1 = n, k2 = n;
+  for (size_t t = 0; t < n.size(); ++t) {
+    n[t] = 64 << (t % 4);
+    k1[t] = n[t] / 2;
+    k2[t] = n[t] / 4;
+  }
+  std::vector<float> mean(size_t(w) * h * 4), s1(mean.size()), s2(mean.size()), var(mean.size());
+  // Differences exactly the model's with exponent 1.2 (as in the test above).
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t t = size_t(y / tile) * tiles_x + x / tile;
+      const double c = 0.5 + 0.001 * ((x + y) % 97);
+      for (int ch = 0; ch < 3; ++ch) {
+        const size_t p = (size_t(y) * w + x) * 4 + ch;
+        mean[p] = 1.0f;
+        var[p] = 0.01f;
+        s1[p] = float(1.0 + std::sqrt(c * 1.01 * (std::pow(k1[t], -1.2) - std::pow(n[t], -1.2))));
+        s2[p] = float(1.0 - std::sqrt(c * 1.01 * (std::pow(k2[t], -1.2) - std::pow(n[t], -1.2))));
+      }
+    }
+  const PixelCounts now{tile, tiles_x, &n};
+  const std::vector<SnapshotView> views{{&s2, PixelCounts{tile, tiles_x, &k2}}, {&s1, PixelCounts{tile, tiles_x, &k1}}};
+  const auto t0 = std::chrono::steady_clock::now();
+  const double a = snapshot_exponent(mean, views, w, h, now, 7.0);
+  const std::vector<ErrorSums> tiles = error_tiles(mean, var, views, w, h, now, a, 32);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("adaptive error estimate at %dx%d: %.0f ms (exponent %.3f)\n", w, h, ms, a);
+  CHECK(a == Approx(1.2).margin(2e-3));
+  CHECK(tiles.size() == size_t(tiles_x) * tiles_y);
+  CHECK(ms < 600.0);
 }
