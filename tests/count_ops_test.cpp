@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "gl_context.h"
+#include "accel_run.h"
 #include "render/renderer.h"
 #include "scene/xml_loader.h"
 #include "test_paths.h"
@@ -15,15 +15,7 @@ using namespace pt;
 
 namespace {
 
-struct CountRun {
-  std::vector<float> rgba;
-  Renderer::Counters counters;
-};
-
-CountRun run_counted(const Scene& scene, Accel accel, bool compute, bool count, bool nee) {
-  test_gl();
-  Renderer r;
-  r.resize(23, 19);
+AccelRun run_counted(const Scene& scene, Accel accel, bool compute, bool count, bool nee) {
   RenderSettings st;
   st.accel = accel;
   st.compute = compute;
@@ -31,10 +23,7 @@ CountRun run_counted(const Scene& scene, Accel accel, bool compute, bool count, 
   st.nee = nee;
   st.sample_limit = 4;
   st.spp_per_pass = 2;
-  r.set_settings(st);
-  r.set_scene(scene);
-  while (!r.converged()) r.step();
-  return {r.read_radiance(), r.counters()};
+  return run_render(scene, st, 23, 19);
 }
 
 // Five analytic primitives, no planes: a flat loop tests all five on every nearest-hit query.
@@ -55,21 +44,21 @@ TEST_CASE("count-ops: exact counts where they are known, and the same image", "[
     INFO((compute ? "compute kernel" : "fragment pass"));
     // BSDF sampling only: every query is a nearest hit, and a flat loop tests every
     // primitive for each, so primitive tests = 5 x rays exactly; no node is visited.
-    const CountRun flat = run_counted(five, Accel::Flat, compute, true, false);
+    const AccelRun flat = run_counted(five, Accel::Flat, compute, true, false);
     REQUIRE(flat.counters.rays > 23 * 19 * 4);
     CHECK(flat.counters.prim_tests == 5 * flat.counters.rays);
     CHECK(flat.counters.box_tests == 0);
     // The BVH: the root's box is tested once per ray and each interior node visited adds
     // its two children's, so box tests - rays is even and at least 0; it tests no more
     // primitives than the loop, and fewer here (the spheres and boxes are apart).
-    const CountRun bvh = run_counted(five, Accel::Bvh, compute, true, false);
+    const AccelRun bvh = run_counted(five, Accel::Bvh, compute, true, false);
     CHECK(bvh.counters.rays == flat.counters.rays);
     CHECK(bvh.counters.box_tests >= bvh.counters.rays);
     CHECK(std::fmod(bvh.counters.box_tests - bvh.counters.rays, 2.0) == 0.0);
     CHECK(bvh.counters.prim_tests > 0);
     CHECK(bvh.counters.prim_tests < flat.counters.prim_tests);
     // Counting changes the statistics' z and w only: the mean is the same, bit for bit.
-    const CountRun plain = run_counted(five, Accel::Bvh, compute, false, false);
+    const AccelRun plain = run_counted(five, Accel::Bvh, compute, false, false);
     CHECK(plain.counters.box_tests == 0);
     CHECK(plain.counters.prim_tests == 0);
     bool same = plain.rgba.size() == bvh.rgba.size();
@@ -78,7 +67,7 @@ TEST_CASE("count-ops: exact counts where they are known, and the same image", "[
     CHECK(same);
     // With next-event estimation a shadow query ends at its first hit: fewer than five tests
     // per ray on average, but more than one.
-    const CountRun nee = run_counted(five, Accel::Flat, compute, true, true);
+    const AccelRun nee = run_counted(five, Accel::Flat, compute, true, true);
     CHECK(nee.counters.prim_tests < 5 * nee.counters.rays);
     CHECK(nee.counters.prim_tests > nee.counters.rays);
   }
@@ -87,7 +76,7 @@ TEST_CASE("count-ops: exact counts where they are known, and the same image", "[
       "<SceneLevel><Camera position=\"0 0 5\" yaw=\"270\"/><Objects><Sphere center=\"0 0 0\" radius=\"1\"><Diffuse/></Sphere>"
       "<Sphere center=\"3 0 0\" radius=\"1\"><Diffuse/></Sphere></Objects></SceneLevel>",
       repo_path("scenes/count-ops.xml"));
-  const CountRun sky = run_counted(away, Accel::Bvh, true, true, true);
+  const AccelRun sky = run_counted(away, Accel::Bvh, true, true, true);
   CHECK(sky.counters.rays == 23 * 19 * 4);
   CHECK(sky.counters.box_tests == sky.counters.rays);
   CHECK(sky.counters.prim_tests == 0);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "accel_run.h"
 #include "gl_context.h"
 #include "glsl_harness.h"
 #include "render/packing.h"
@@ -21,25 +22,13 @@ using namespace pt;
 
 namespace {
 
-struct AccelRun {
-  std::vector<float> rgba;
-  Renderer::Counters counters;
-  bool flat;
-};
-
 AccelRun run_accel(const Scene& scene, Accel accel, bool compute) {
-  test_gl();
-  Renderer r;
-  r.resize(37, 29);
   RenderSettings st;
   st.accel = accel;
   st.compute = compute;
   st.sample_limit = 6;
   st.spp_per_pass = 2;
-  r.set_settings(st);
-  r.set_scene(scene);
-  while (!r.converged()) r.step();
-  return {r.read_radiance(), r.counters(), r.using_flat()};
+  return run_render(scene, st, 37, 29);
 }
 
 // scene2 with `extra` small diffuse spheres inside the room (more primitives than auto
