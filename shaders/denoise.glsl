@@ -7,7 +7,8 @@
 //   1 one a-trous iteration (Dammertz et al. 2010) with step u_step: a 5x5 B3-spline
 //     kernel whose taps are weighted by SVGF's edge-stopping functions (Schied et al.
 //     2017, eq. 3-5): depth (against the depth's screen gradient), shading normal
-//     (cosine^128) and luminance (against the standard deviation of the pixel's
+//     (cosine^128), first-hit albedo (not SVGF's: a light's rim shares the ceiling's plane
+//     and normal) and luminance (against the standard deviation of the pixel's
 //     luminance, its variance blurred 3x3), the variance filtered along with squared
 //     weights (SVGF eq. 2);
 //   2 finish: re-modulated by the albedo and blended with the raw mean by u_weight.
@@ -23,7 +24,7 @@ uniform highp sampler2D u_input;     // passes 1, 2: demodulated RGB and its lum
 uniform int u_samples;
 uniform int u_step;                  // pass 1: the a-trous step, 1, 2, 4, ...
 uniform float u_weight;              // pass 2: blend weight of the filtered image
-uniform float u_sigma_z, u_sigma_n, u_sigma_l;
+uniform float u_sigma_z, u_sigma_n, u_sigma_l, u_sigma_a;
 out vec4 o_color;
 
 const vec3 kLum = vec3(0.2126, 0.7152, 0.0722);
@@ -62,22 +63,28 @@ struct Guide {
   float z;     // depth
   vec2 grad;   // depth_gradient
   vec3 n;      // unit normal (when valid)
+  vec3 a;      // first-hit albedo (an emitter's: 1)
   bool valid;  // a surface: the ray did not leave the scene
 };
 Guide guide(ivec2 p) {
   vec3 n = texelFetch(u_aux1, p, 0).xyz;
   bool valid = dot(n, n) > 0.25;  // else the ray left the scene (or an edge of one)
-  return Guide(depth(p), depth_gradient(p), valid ? normalize(n) : n, valid);
+  return Guide(depth(p), depth_gradient(p), valid ? normalize(n) : n, texelFetch(u_aux0, p, 0).rgb, valid);
 }
 
-// SVGF's geometric edge-stopping weight of tap q for pixel p (0 across a sky edge).
+// SVGF's geometric edge-stopping weight of tap q for pixel p (0 across a sky edge), times
+// an albedo term: exp(-(d / sigma_a)^2) with d the largest channel's difference relative to
+// the pair's mean, so that a light's rim does not mix the emitter with the ceiling around
+// it (they share a plane and a normal; the albedo of an emitter seen directly is 1).
 float geometry_weight(Guide g, ivec2 p, ivec2 q) {
   vec3 nq = texelFetch(u_aux1, q, 0).xyz;
   bool valid_q = dot(nq, nq) > 0.25;
   if (valid_q != g.valid) return 0.0;
   float wn = g.valid ? pow(max(dot(g.n, normalize(nq)), 0.0), u_sigma_n) : 1.0;
-  float zq = depth(q);
-  return wn * exp(-abs(g.z - zq) / (u_sigma_z * dot(g.grad, abs(vec2(q - p))) + 1.0e-3 * abs(g.z) + 1.0e-6));
+  vec4 aq = texelFetch(u_aux0, q, 0);
+  vec3 da = abs(g.a - aq.rgb) / (0.5 * (g.a + aq.rgb) + 0.02);
+  float d = max(da.r, max(da.g, da.b)) / u_sigma_a;
+  return wn * exp(-abs(g.z - aq.a) / (u_sigma_z * dot(g.grad, abs(vec2(q - p))) + 1.0e-3 * abs(g.z) + 1.0e-6) - d * d);
 }
 
 const float kB3[3] = float[3](0.375, 0.25, 0.0625);  // the B3 spline: 1/16 1/4 3/8 1/4 1/16

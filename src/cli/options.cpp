@@ -50,7 +50,8 @@ const char* const kUsage =
     "        blended with the raw by --denoise-weight W (0..1; default auto: from the estimated relMSE);\n"
     "        --out-aux PREFIX writes PREFIX-albedo.pfm, PREFIX-normal.pfm, PREFIX-depth.pfm (implies --denoise);\n"
     "        --out-spp FILE.pfm: each pixel's sample count (with --adaptive on, its tile's)\n"
-    "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L (default 5,1,128,4: SVGF's) for tuning\n"
+    "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L[,SIGMA_A] (default 5,1,128,4,0.05: SVGF's and the albedo's)\n"
+    "          for tuning\n"
     "watch:  re-loads SCENE.xml when it or a file it references changes and re-renders to --out,\n"
     "        replaced atomically at 1, 2, 4, ... spp; a broken edit prints file:line and keeps the last image\n"
     "bench:  renders for S seconds; at 1, 2, 4, ... spp records time, relMSE and RMSE\n"
@@ -146,7 +147,8 @@ Options parse_options(int argc, char** argv, bool bench) {
     } else if (!bench && a == "--denoise-params") {
       const char* v = next();
       DenoiseParams& d = o.denoise_params;
-      if (std::sscanf(v, "%d,%f,%f,%f", &d.iterations, &d.sigma_z, &d.sigma_n, &d.sigma_l) != 4 || d.iterations < 0 || d.iterations > 12)
+      if (std::sscanf(v, "%d,%f,%f,%f,%f", &d.iterations, &d.sigma_z, &d.sigma_n, &d.sigma_l, &d.sigma_a) < 4 || d.iterations < 0 ||
+          d.iterations > 12)
         usage_error(std::string("bad --denoise-params: ") + v);
       o.settings.aux = true;
     } else if (!bench && a == "--denoise-weight") {

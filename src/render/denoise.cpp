@@ -46,6 +46,7 @@ void Denoiser::pass(int kind, const Texture* input, const Framebuffer& target, c
   p.set("u_sigma_z", params.sigma_z);
   p.set("u_sigma_n", params.sigma_n);
   p.set("u_sigma_l", params.sigma_l);
+  p.set("u_sigma_a", params.sigma_a);
   p.set("u_step", step);
   p.set("u_weight", weight);
   in.radiance->bind(0);

@@ -36,6 +36,7 @@ struct DenoiseParams {
   float sigma_z = 1.0f;   // depth: SVGF's values
   float sigma_n = 128.0f; // normal: the exponent of the cosine
   float sigma_l = 4.0f;   // luminance: standard deviations
+  float sigma_a = 0.05f;  // albedo: its relative difference (the light's rim)
 };
 
 // The blend weight of the filtered image given the raw image's estimated relMSE (the
