@@ -50,8 +50,8 @@ const char* const kUsage =
     "        blended with the raw by --denoise-weight W (0..1; default auto: from the estimated relMSE);\n"
     "        --out-aux PREFIX writes PREFIX-albedo.pfm, PREFIX-normal.pfm, PREFIX-depth.pfm (implies --denoise);\n"
     "        --out-spp FILE.pfm: each pixel's sample count (with --adaptive on, its tile's)\n"
-    "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L[,SIGMA_A] (default 5,1,128,4,0.05: SVGF's and the albedo's)\n"
-    "          for tuning\n"
+    "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L[,SIGMA_A,REG_RADIUS,REG_STRIDE,REG_REL,REG_SD,REG_RIDGE,REG_INPUT]\n"
+    "          for tuning (defaults: render/denoise.h)\n"
     "watch:  re-loads SCENE.xml when it or a file it references changes and re-renders to --out,\n"
     "        replaced atomically at 1, 2, 4, ... spp; a broken edit prints file:line and keeps the last image\n"
     "bench:  renders for S seconds; at 1, 2, 4, ... spp records time, relMSE and RMSE\n"
@@ -147,8 +147,9 @@ Options parse_options(int argc, char** argv, bool bench) {
     } else if (!bench && a == "--denoise-params") {
       const char* v = next();
       DenoiseParams& d = o.denoise_params;
-      if (std::sscanf(v, "%d,%f,%f,%f,%f", &d.iterations, &d.sigma_z, &d.sigma_n, &d.sigma_l, &d.sigma_a) < 4 || d.iterations < 0 ||
-          d.iterations > 12)
+      if (std::sscanf(v, "%d,%f,%f,%f,%f,%d,%d,%f,%f,%f,%d", &d.iterations, &d.sigma_z, &d.sigma_n, &d.sigma_l, &d.sigma_a, &d.reg_radius,
+                      &d.reg_stride, &d.reg_rel, &d.reg_sd, &d.reg_ridge, &d.reg_input) < 4 ||
+          d.iterations < 0 || d.iterations > 12 || d.reg_radius < 0 || d.reg_radius > 12 || d.reg_stride < 1 || d.reg_stride > 8)
         usage_error(std::string("bad --denoise-params: ") + v);
       o.settings.aux = true;
     } else if (!bench && a == "--denoise-weight") {
