@@ -91,7 +91,7 @@ float geometry_weight(Guide g, ivec2 p, ivec2 q) {
   float wn = g.valid ? pow(max(dot(g.n, normalize(nq)), 0.0), u_sigma_n) : 1.0;
   vec4 aq = texelFetch(u_aux0, q, 0);
   vec3 da = abs(g.a - aq.rgb) / (0.5 * (g.a + aq.rgb) + 0.02);
-  float d = max(da.r, max(da.g, da.b)) / u_sigma_a;
+  float d = u_sigma_a > 0.0 ? max(da.r, max(da.g, da.b)) / u_sigma_a : 0.0;  // 0: off
   return wn * exp(-abs(g.z - aq.a) / (u_sigma_z * dot(g.grad, abs(vec2(q - p))) + 1.0e-3 * abs(g.z) + 1.0e-6) - d * d);
 }
 

@@ -41,7 +41,7 @@ struct DenoiseParams {
   float sigma_z = 1.0f;   // depth: SVGF's values
   float sigma_n = 128.0f; // normal: the exponent of the cosine
   float sigma_l = 4.0f;   // luminance: standard deviations
-  float sigma_a = 0.05f;  // albedo: its relative difference (the light's rim)
+  float sigma_a = 0.05f;  // albedo: its relative difference (the light's rim); 0: off
   // The final regression pass (0: none): (2 reg_radius + 1)^2 taps reg_stride apart.
   int reg_radius = 7;
   int reg_stride = 1;
