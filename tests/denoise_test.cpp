@@ -22,7 +22,7 @@ namespace {
 
 // The four input images of a w x h test, RGBA each, rows bottom to top.
 struct Synthetic {
-  int w, h, samples = 16;
+  int w, h, samples = 64;  // at the gate (DenoiseParams::min_samples): every pass runs
   std::vector<float> radiance, stats, aux0, aux1;
   Synthetic(int w_, int h_) : w(w_), h(h_), radiance(size_t(w_) * h_ * 4), stats(radiance.size()), aux0(radiance.size()), aux1(radiance.size()) {}
   // Pixel (x, y): mean grey radiance `L`, the variance of that mean `var_mean`, albedo,
@@ -175,6 +175,43 @@ TEST_CASE("denoiser: a linear ramp of radiance on a plane comes back to the bord
   for (int x = 0; x < line.w; ++x) e = std::max(e, std::isfinite(line.at(l, x, 0)) ? double(std::abs(line.at(l, x, 0) - ramp(x, 0))) : 1e30);
   INFO("one row: largest error " << e);
   CHECK(e < 1e-4);
+}
+
+TEST_CASE("denoiser: below min_samples the output is the a-trous passes' alone bit for bit; from it, not", "[gpu][denoise]") {
+  test_gl();
+  // A noisy ramp with an albedo edge: both the albedo term and the regression change it.
+  auto make = [](int samples) {
+    Synthetic s(48, 32);
+    s.samples = samples;
+    std::mt19937 rng(5);
+    std::normal_distribution<float> noise(0.0f, 0.05f);
+    for (int y = 0; y < s.h; ++y)
+      for (int x = 0; x < s.w; ++x)
+        s.set(x, y, 0.2f + 0.01f * float(x) + noise(rng), 0.0025f, x < 24 ? 0.5f : 0.6f, 1.0f + 0.02f * float(x));
+    return s;
+  };
+  DenoiseParams atrous;  // main's filter: no albedo term, no regression
+  atrous.sigma_a = 0.0f;
+  atrous.reg_radius = 0;
+  const int n_min = DenoiseParams{}.min_samples;
+  REQUIRE(n_min > 1);
+  for (int n : {1, n_min / 4, n_min - 1}) {
+    const Synthetic s = make(n);
+    INFO(n << " spp");
+    CHECK(same_rgb(s.denoise(), s.denoise(1.0f, atrous)));
+  }
+  for (int n : {n_min, 4 * n_min}) {
+    const Synthetic s = make(n);
+    INFO(n << " spp");
+    CHECK_FALSE(same_rgb(s.denoise(), s.denoise(1.0f, atrous)));
+    // Either component alone changes it too (each is gated, not only one).
+    DenoiseParams albedo_only = atrous;
+    albedo_only.sigma_a = DenoiseParams{}.sigma_a;
+    DenoiseParams regression_only = atrous;
+    regression_only.reg_radius = DenoiseParams{}.reg_radius;
+    CHECK_FALSE(same_rgb(s.denoise(1.0f, albedo_only), s.denoise(1.0f, atrous)));
+    CHECK_FALSE(same_rgb(s.denoise(1.0f, regression_only), s.denoise(1.0f, atrous)));
+  }
 }
 
 TEST_CASE("denoiser: a noisy flat region's variance falls at least 25-fold", "[gpu][denoise]") {

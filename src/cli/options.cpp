@@ -50,7 +50,7 @@ const char* const kUsage =
     "        blended with the raw by --denoise-weight W (0..1; default auto: from the estimated relMSE);\n"
     "        --out-aux PREFIX writes PREFIX-albedo.pfm, PREFIX-normal.pfm, PREFIX-depth.pfm (implies --denoise);\n"
     "        --out-spp FILE.pfm: each pixel's sample count (with --adaptive on, its tile's)\n"
-    "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L[,SIGMA_A,REG_RADIUS,REG_STRIDE,REG_REL,REG_SD,REG_RIDGE,REG_INPUT]\n"
+    "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L[,SIGMA_A,REG_RADIUS,REG_STRIDE,REG_REL,REG_SD,REG_RIDGE,REG_INPUT,MIN_SAMPLES]\n"
     "          for tuning (defaults: render/denoise.h)\n"
     "watch:  re-loads SCENE.xml when it or a file it references changes and re-renders to --out,\n"
     "        replaced atomically at 1, 2, 4, ... spp; a broken edit prints file:line and keeps the last image\n"
@@ -147,8 +147,9 @@ Options parse_options(int argc, char** argv, bool bench) {
     } else if (!bench && a == "--denoise-params") {
       const char* v = next();
       DenoiseParams& d = o.denoise_params;
-      if (std::sscanf(v, "%d,%f,%f,%f,%f,%d,%d,%f,%f,%f,%d", &d.iterations, &d.sigma_z, &d.sigma_n, &d.sigma_l, &d.sigma_a, &d.reg_radius,
-                      &d.reg_stride, &d.reg_rel, &d.reg_sd, &d.reg_ridge, &d.reg_input) < 4 ||
+      if (std::sscanf(v, "%d,%f,%f,%f,%f,%d,%d,%f,%f,%f,%d,%d", &d.iterations, &d.sigma_z, &d.sigma_n, &d.sigma_l, &d.sigma_a,
+                      &d.reg_radius, &d.reg_stride, &d.reg_rel, &d.reg_sd, &d.reg_ridge, &d.reg_input, &d.min_samples) < 4 ||
+          d.min_samples < 0 ||
           d.iterations < 0 || d.iterations > 12 || d.reg_radius < 0 || d.reg_radius > 12 || d.reg_stride < 1 || d.reg_stride > 8)
         usage_error(std::string("bad --denoise-params: ") + v);
       o.settings.aux = true;

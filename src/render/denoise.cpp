@@ -57,7 +57,7 @@ void Denoiser::pass(int kind, const Texture* input, const Framebuffer& target, c
   p.set("u_sigma_z", params.sigma_z);
   p.set("u_sigma_n", params.sigma_n);
   p.set("u_sigma_l", params.sigma_l);
-  p.set("u_sigma_a", params.sigma_a);
+  p.set("u_sigma_a", params.gated(in.samples) ? 0.0f : params.sigma_a);
   p.set("u_step", step);
   p.set("u_weight", weight);
   in.radiance->bind(0);
@@ -90,7 +90,7 @@ void Denoiser::run(const DenoiseInputs& in, float weight, GLuint vao) {
     out_ = Texture(w, h, format_, nullptr);
     out_fbo_ = Framebuffer(out_);
   }
-  const bool regress = params.reg_radius > 0;
+  const bool regress = params.reg_radius > 0 && !params.gated(in.samples);
   // With the regression, the image it fits (the prepare pass's output, or that of a-trous
   // iteration reg_input) is kept aside; the other iterations ping-pong between the two
   // other textures.
