@@ -22,7 +22,7 @@ namespace {
 
 // The four input images of a w x h test, RGBA each, rows bottom to top.
 struct Synthetic {
-  int w, h, samples = 64;  // at the gate (DenoiseParams::min_samples): every pass runs
+  int w, h, samples = 64;  // above the gate (DenoiseParams::min_samples): every pass runs
   std::vector<float> radiance, stats, aux0, aux1;
   Synthetic(int w_, int h_) : w(w_), h(h_), radiance(size_t(w_) * h_ * 4), stats(radiance.size()), aux0(radiance.size()), aux1(radiance.size()) {}
   // Pixel (x, y): mean grey radiance `L`, the variance of that mean `var_mean`, albedo,

@@ -51,11 +51,12 @@ struct DenoiseParams {
   int reg_input = 1;       // what it fits: 0 the unfiltered image, i the output of a-trous iteration i
   // The gate: below this many samples per pixel the albedo term and the regression pass are
   // off (the a-trous iterations alone, main's filter, bit for bit). Fitted on four scenes
-  // (docs/denoise.md, in-sample): the smallest measured count (1, 4, 16, 64, 256) from which
-  // the two together are nowhere more than 5% worse than the a-trous passes alone; below it
-  // each is worse somewhere (the regression 2.6x in scene0 at 4 spp, 6x in the Cornell box
-  // at 4 spp; the albedo term 1.4x in the wood scene at 4 spp). 0: always on.
-  int min_samples = 64;
+  // (docs/denoise.md, in-sample): the smallest measured count (1, 4, 16, 24, 32, 64, 256)
+  // from which the two together are nowhere more than 5% worse than the a-trous passes
+  // alone (16 spp: the wood scene 1.09x; 24: 1.02x). Below it each is worse somewhere (the
+  // regression 2.6x in scene0 and 6x in the Cornell box at 4 spp; the albedo term 1.4x in
+  // the wood scene at 4 spp). 0: always on.
+  int min_samples = 24;
   bool gated(int samples) const { return samples < min_samples; }
 };
 
