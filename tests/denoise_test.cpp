@@ -177,7 +177,7 @@ TEST_CASE("denoiser: a linear ramp of radiance on a plane comes back to the bord
   CHECK(e < 1e-4);
 }
 
-TEST_CASE("denoiser: below min_samples the output is the a-trous passes' alone bit for bit; from it, not", "[gpu][denoise]") {
+TEST_CASE("denoiser: below min_samples the output is the a-trous passes' alone bit for bit, from it not", "[gpu][denoise]") {
   test_gl();
   // A noisy ramp with an albedo edge: both the albedo term and the regression change it.
   auto make = [](int samples) {
