@@ -5,7 +5,8 @@ relMSE, render/denoise.h) at 1, 4, ... spp, over the whole image, along edges an
 textured regions, as a Markdown table (docs/denoise.md).
 
     python3 tools/denoise_eval.py [--bin build/native/pathtracer] [--size 128x128]
-        [--ref-spp 16384] [--spp 1,4,16,64,256,1024] [--dir build/denoise-eval] [SCENE.xml ...]
+        [--ref-spp 16384] [--spp 1,4,16,64,256,1024] [--dir build/denoise-eval] [--ref-dir DIR]
+        [--denoise-params P] [SCENE.xml ...]
 
 References are rendered once into --dir (SCENE-ref.pfm and its first-hit auxiliaries,
 SCENE-ref-{albedo,normal,depth}.pfm) and reused while they exist; --ref-dir takes them
@@ -101,10 +102,13 @@ def main():
     ap.add_argument("--dir", default="build/denoise-eval")
     ap.add_argument("--ref-dir", default=None)
     ap.add_argument("--kernel", default=None, help="compute or fragment (default: the binary's)")
+    ap.add_argument("--denoise-params", default=None, help="passed to the renderer (pathtracer --help), e.g. "
+                    "5,1,128,4,0,0 for the a-trous passes alone (main's filter)")
     a = ap.parse_args()
     os.makedirs(a.dir, exist_ok=True)
     ref_dir = a.ref_dir or a.dir
     kernel = ["--kernel", a.kernel] if a.kernel else []
+    dparams = ["--denoise-params", a.denoise_params] if a.denoise_params else []
     rows = []
     for scene in a.scenes:
         name = re.sub(r"\.xml$", "", scene.replace("scenes/", "").replace("/", "-"))
@@ -128,7 +132,7 @@ def main():
             base = os.path.join(a.dir, f"{name}-{n}")
             out = run([a.bin, "render", scene, "--size", a.size, "--spp", str(n), "--spp-per-pass", str(min(n, 16)),
                        "--out", base + "-raw.pfm", "--out", base + "-raw.png", "--denoise-weight", "1",
-                       "--out-denoised", base + "-denoised.pfm", "--out-denoised", base + "-denoised.png"] + kernel)
+                       "--out-denoised", base + "-denoised.pfm", "--out-denoised", base + "-denoised.png"] + kernel + dparams)
             m = re.search(r"from the estimated relMSE: ([0-9.]+)\), \d+ iterations in ([0-9.]+) ms", out)
             weight, ms = float(m.group(1)), float(m.group(2))
             est = re.search(r"estimated relMSE: ([0-9.eE+-]+)", out)

@@ -50,7 +50,8 @@ const char* const kUsage =
     "        blended with the raw by --denoise-weight W (0..1; default auto: from the estimated relMSE);\n"
     "        --out-aux PREFIX writes PREFIX-albedo.pfm, PREFIX-normal.pfm, PREFIX-depth.pfm (implies --denoise);\n"
     "        --out-spp FILE.pfm: each pixel's sample count (with --adaptive on, its tile's)\n"
-    "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L (default 5,1,128,4: SVGF's) for tuning\n"
+    "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L[,SIGMA_A,REG_RADIUS,REG_STRIDE,REG_REL,REG_SD,REG_RIDGE,REG_INPUT,MIN_SAMPLES]\n"
+    "          for tuning (defaults: render/denoise.h)\n"
     "        --count-ops: count the traversal's box and primitive tests and print them per ray (a\n"
     "        program of its own, in place of the variance: no estimate, adaptive sampling or denoiser)\n"
     "watch:  re-loads SCENE.xml when it or a file it references changes and re-renders to --out,\n"
@@ -150,7 +151,10 @@ Options parse_options(int argc, char** argv, bool bench) {
     } else if (!bench && a == "--denoise-params") {
       const char* v = next();
       DenoiseParams& d = o.denoise_params;
-      if (std::sscanf(v, "%d,%f,%f,%f", &d.iterations, &d.sigma_z, &d.sigma_n, &d.sigma_l) != 4 || d.iterations < 0 || d.iterations > 12)
+      if (std::sscanf(v, "%d,%f,%f,%f,%f,%d,%d,%f,%f,%f,%d,%d", &d.iterations, &d.sigma_z, &d.sigma_n, &d.sigma_l, &d.sigma_a,
+                      &d.reg_radius, &d.reg_stride, &d.reg_rel, &d.reg_sd, &d.reg_ridge, &d.reg_input, &d.min_samples) < 4 ||
+          d.min_samples < 0 ||
+          d.iterations < 0 || d.iterations > 12 || d.reg_radius < 0 || d.reg_radius > 12 || d.reg_stride < 1 || d.reg_stride > 8)
         usage_error(std::string("bad --denoise-params: ") + v);
       o.settings.aux = true;
     } else if (!bench && a == "--denoise-weight") {

@@ -19,9 +19,11 @@ float denoise_weight(double e, bool known) {
 
 namespace {
 
-ShaderSource denoise_source(int kind) {
+ShaderSource denoise_source(int kind, const DenoiseParams& params) {
   return resolve_includes("#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
-                          "#define PT_DENOISE_PASS " + std::to_string(kind) + "\n#include \"denoise.glsl\"\n",
+                          "#define PT_DENOISE_PASS " + std::to_string(kind) + "\n#define PT_REG_RADIUS " +
+                              std::to_string(params.reg_radius) + "\n#define PT_REG_STRIDE " + std::to_string(params.reg_stride) +
+                              "\n#include \"denoise.glsl\"\n",
                           "<generated denoise>");
 }
 
@@ -33,19 +35,29 @@ DenoiseInputs DenoiseInputs::of(const Accumulator& a) {
 }
 
 void Denoiser::pass(int kind, const Texture* input, const Framebuffer& target, const DenoiseInputs& in, GLuint vao, int step,
-                    float weight) {
+                    float weight, const Texture* noisy) {
   Program& p = programs_[kind];
-  if (!p.id()) p = Program(fullscreen_vertex(), denoise_source(kind));
+  if (kind == 3 && (reg_built_[0] != params.reg_radius || reg_built_[1] != params.reg_stride)) {
+    p = Program();
+    reg_built_[0] = params.reg_radius;
+    reg_built_[1] = params.reg_stride;
+  }
+  if (!p.id()) p = Program(fullscreen_vertex(), denoise_source(kind, params));
   p.use();
   p.set("u_radiance", 0);
   p.set("u_stats", 1);
   p.set("u_aux0", 2);
   p.set("u_aux1", 3);
   p.set("u_input", 4);
+  p.set("u_noisy", 5);
+  p.set("u_reg_rel", params.reg_rel);
+  p.set("u_reg_sd", params.reg_sd);
+  p.set("u_reg_ridge", params.reg_ridge);
   p.set("u_samples", in.samples);
   p.set("u_sigma_z", params.sigma_z);
   p.set("u_sigma_n", params.sigma_n);
   p.set("u_sigma_l", params.sigma_l);
+  p.set("u_sigma_a", params.gated(in.samples) ? 0.0f : params.sigma_a);
   p.set("u_step", step);
   p.set("u_weight", weight);
   in.radiance->bind(0);
@@ -53,6 +65,7 @@ void Denoiser::pass(int kind, const Texture* input, const Framebuffer& target, c
   in.aux0->bind(2);
   in.aux1->bind(3);
   if (input) input->bind(4);
+  if (noisy) noisy->bind(5);
   glBindFramebuffer(GL_FRAMEBUFFER, target.id());
   glViewport(0, 0, width_, height_);
   glDisable(GL_BLEND);
@@ -70,18 +83,31 @@ void Denoiser::run(const DenoiseInputs& in, float weight, GLuint vao) {
     width_ = w;
     height_ = h;
     format_ = in.format;
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < 3; ++i) {
       tex_[i] = Texture(w, h, format_, nullptr);
       fbo_[i] = Framebuffer(tex_[i]);
     }
     out_ = Texture(w, h, format_, nullptr);
     out_fbo_ = Framebuffer(out_);
   }
-  pass(0, nullptr, fbo_[0], in, vao);
-  int cur = 0;
-  for (int i = 0; i < params.iterations; ++i) {
-    pass(1, &tex_[cur], fbo_[1 - cur], in, vao, 1 << i);
-    cur = 1 - cur;
+  const bool regress = params.reg_radius > 0 && !params.gated(in.samples);
+  // With the regression, the image it fits (the prepare pass's output, or that of a-trous
+  // iteration reg_input) is kept aside; the other iterations ping-pong between the two
+  // other textures.
+  int cur = 0, keep = -1;
+  pass(0, nullptr, fbo_[cur], in, vao);
+  auto other = [&](int a, int b) { return a != 0 && b != 0 ? 0 : a != 1 && b != 1 ? 1 : 2; };
+  for (int i = 0; i <= params.iterations; ++i) {
+    if (regress && i == std::min(params.reg_input, params.iterations)) keep = cur;
+    if (i == params.iterations) break;
+    const int next = other(cur, keep);
+    pass(1, &tex_[cur], fbo_[next], in, vao, 1 << i);
+    cur = next;
+  }
+  if (regress) {
+    const int next = other(cur, keep);
+    pass(3, &tex_[cur], fbo_[next], in, vao, 0, 0.0f, &tex_[keep]);
+    cur = next;
   }
   pass(2, &tex_[cur], out_fbo_, in, vao, 0, std::clamp(weight, 0.0f, 1.0f));
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -1,13 +1,18 @@
 // The denoiser (issue 14): an edge-aware a-trous wavelet filter of the displayed image,
-// SVGF's spatial part (Schied et al. 2017, after Dammertz et al. 2010), in GLSL ES 3.00
-// fragment passes (shaders/denoise.glsl): the radiance is divided by the first-hit albedo,
-// filtered in 5 iterations of a 5x5 kernel whose taps stop at depth and normal edges and
-// at luminance differences large against the pixel's standard deviation (from the
-// accumulator's per-pixel variance), then multiplied by the albedo again. It needs the
-// camera pass's auxiliaries (RenderSettings::aux: albedo, normal, depth; camera_aux.glsl)
-// and reads the accumulator, never writes it: the running mean stays unbiased, and the
-// filtered image is blended with it by a weight that falls with the estimated relMSE
-// (denoise_weight), so a converged image is the raw one. Measured: docs/denoise.md.
+// SVGF's spatial part (Schied et al. 2017, after Dammertz et al. 2010), followed by a
+// weighted local first-order regression (Moon et al. 2014; Bitterli et al. 2016), in GLSL
+// ES 3.00 fragment passes (shaders/denoise.glsl): the radiance is divided by the first-hit
+// albedo, filtered in 5 iterations of a 5x5 kernel whose taps stop at depth, normal and
+// albedo edges and at luminance differences large against the pixel's standard deviation
+// (from the accumulator's per-pixel variance); the first iteration's output is then
+// fitted in a 15x15 window as linear in the screen offset, with the same geometric
+// weights and range weights from the last iteration's output, and the pixel gets the
+// fit's value (a lighting gradient is not flattened, also at edges and borders); then
+// multiplied by the albedo again. It needs the camera pass's auxiliaries
+// (RenderSettings::aux: albedo, normal, depth; camera_aux.glsl) and reads the
+// accumulator, never writes it: the running mean stays unbiased, and the filtered image
+// is blended with it by a weight that falls with the estimated relMSE (denoise_weight),
+// so a converged image is the raw one. Measured: docs/denoise.md.
 #pragma once
 #include <vector>
 
@@ -36,6 +41,23 @@ struct DenoiseParams {
   float sigma_z = 1.0f;   // depth: SVGF's values
   float sigma_n = 128.0f; // normal: the exponent of the cosine
   float sigma_l = 4.0f;   // luminance: standard deviations
+  float sigma_a = 0.05f;  // albedo: its relative difference (the light's rim); 0: off
+  // The final regression pass (0: none): (2 reg_radius + 1)^2 taps reg_stride apart.
+  int reg_radius = 7;
+  int reg_stride = 1;
+  float reg_rel = 0.2f;    // the guide's tolerance: relative luminance difference
+  float reg_sd = 2.0f;     // ... and standard deviations of the guide
+  float reg_ridge = 1e-5f; // the slopes' ridge, relative to the sum of weights
+  int reg_input = 1;       // what it fits: 0 the unfiltered image, i the output of a-trous iteration i
+  // The gate: below this many samples per pixel the albedo term and the regression pass are
+  // off (the a-trous iterations alone, main's filter, bit for bit). Fitted on four scenes
+  // (docs/denoise.md, in-sample): the smallest measured count (1, 4, 16, 24, 32, 64, 256)
+  // from which the two together are nowhere more than 5% worse than the a-trous passes
+  // alone (16 spp: the wood scene 1.09x; 24: 1.02x). Below it each is worse somewhere (the
+  // regression 2.6x in scene0 and 6x in the Cornell box at 4 spp; the albedo term 1.4x in
+  // the wood scene at 4 spp). 0: always on.
+  int min_samples = 24;
+  bool gated(int samples) const { return samples < min_samples; }
 };
 
 // The blend weight of the filtered image given the raw image's estimated relMSE (the
@@ -60,10 +82,11 @@ class Denoiser {
 
  private:
   void pass(int kind, const Texture* input, const Framebuffer& target, const DenoiseInputs& in, GLuint vao, int step = 0,
-            float weight = 0.0f);
-  Program programs_[3];  // prepare, one iteration, finish
-  Texture tex_[2];
-  Framebuffer fbo_[2];
+            float weight = 0.0f, const Texture* noisy = nullptr);
+  Program programs_[4];  // prepare, one iteration, finish, regression
+  int reg_built_[2] = {0, 0};  // the regression program's radius and stride
+  Texture tex_[3];  // the a-trous ping-pong and the regression's input
+  Framebuffer fbo_[3];
   Texture out_;
   Framebuffer out_fbo_;
   int width_ = 0, height_ = 0;
