@@ -83,14 +83,20 @@ void Denoiser::run(const DenoiseInputs& in, float weight, GLuint vao) {
     width_ = w;
     height_ = h;
     format_ = in.format;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 2; ++i) {
       tex_[i] = Texture(w, h, format_, nullptr);
       fbo_[i] = Framebuffer(tex_[i]);
     }
+    fbo_[2] = Framebuffer();  // the regression's third texture: made when first needed
+    tex_[2] = Texture();
     out_ = Texture(w, h, format_, nullptr);
     out_fbo_ = Framebuffer(out_);
   }
   const bool regress = params.reg_radius > 0 && !params.gated(in.samples);
+  if (regress && !tex_[2].id()) {  // below the gate (the page's first seconds, a moving camera) never
+    tex_[2] = Texture(w, h, format_, nullptr);
+    fbo_[2] = Framebuffer(tex_[2]);
+  }
   // With the regression, the image it fits (the prepare pass's output, or that of a-trous
   // iteration reg_input) is kept aside; the other iterations ping-pong between the two
   // other textures.

@@ -85,7 +85,7 @@ class Denoiser {
             float weight = 0.0f, const Texture* noisy = nullptr);
   Program programs_[4];  // prepare, one iteration, finish, regression
   int reg_built_[2] = {0, 0};  // the regression program's radius and stride
-  Texture tex_[3];  // the a-trous ping-pong and the regression's input
+  Texture tex_[3];  // the a-trous ping-pong, and the regression's input (made only once it runs)
   Framebuffer fbo_[3];
   Texture out_;
   Framebuffer out_fbo_;
