@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|fragment
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|fragment|denoise
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive or fragment}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive, fragment or denoise}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -177,6 +177,20 @@ case "$part" in
       first=$(set -- ${FRAGMENT_BUILDS}; basename "$1")
       for v in ${FRAGMENT_BUILDS}; do
         cmp -s "$w/$n-$first.pfm" "$w/$n-$(basename "$v").pfm" && echo "$n 16 spp: $(basename "$v") identical to $first" || echo "$n 16 spp: $(basename "$v") DIFFERS from $first"
+      done
+    done
+    ;;
+  denoise)
+    # The denoiser's cost (issue 14, docs/denoise.md): at 1080p, as the page runs it (the
+    # fragment pass), below the regression's gate (16 spp: the a-trous filter alone) and
+    # above it (32 spp: albedo term and regression); render prints the median of 3 timed
+    # runs of the filter alone. A 10 s render first, so the clocks are up.
+    $B render scenes/cornell-box.xml --size $S --spp 100000 --seconds 10 --kernel fragment --out /tmp/w.png | grep -E "rendered"
+    for s in ${DENOISE_SCENES:-scenes/cornell-box.xml scenes/reference/scene0.xml scenes/gltf-instances.xml}; do
+      for n in 16 32; do
+        echo "== $(basename "$s" .xml) $n spp fragment"
+        $B render "$s" --size $S --spp $n --kernel fragment --denoise --out /tmp/w.png --out-denoised "$w/$(basename "$s" .xml)-$n-denoised.png" |
+          grep -E "rendered|denoised:"
       done
     done
     ;;

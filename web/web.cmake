@@ -16,7 +16,7 @@ target_link_libraries(pathtracer_web PRIVATE pt_core pt_imgui)
 target_compile_options(pathtracer_web PRIVATE ${PT_WARNINGS})
 
 set(PT_WEB_SHELL_FILES index.html style.css files.js)
-set(PT_EXPORTS _main _malloc _free _pt_stats_json _pt_view_query _pt_set_size _pt_set_sample_limit _pt_set_denoise _pt_radiance _pt_display _pt_load_scene _pt_reload_scene _pt_work _pt_load_status _pt_scene_files _pt_scene_list _pt_touch _pt_ui_json)
+set(PT_EXPORTS _main _malloc _free _pt_stats_json _pt_view_query _pt_set_size _pt_set_sample_limit _pt_set_denoise _pt_time_denoise _pt_radiance _pt_display _pt_load_scene _pt_reload_scene _pt_work _pt_load_status _pt_scene_files _pt_scene_list _pt_touch _pt_ui_json)
 list(JOIN PT_EXPORTS "," PT_EXPORTS_CSV)
 target_link_options(pathtracer_web PRIVATE
   -sUSE_GLFW=3 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2

@@ -84,6 +84,10 @@ class App {
   void set_fixed_size(int w, int h);                     // 0, 0: follow the framebuffer
   void set_sample_limit(int n);
   void set_denoise(bool on) { denoise_ = on; }           // as the panel's toggle (ptSetDenoise)
+  // The denoiser's cost on the current image (ptTimeDenoise): the median of 3 runs in ms
+  // (Renderer::time_denoiser), the albedo term and regression forced on or off whatever
+  // the sample count (its gate); -1 before the first sample.
+  double time_denoise(bool regression);
   // false: error() says why and the current scene stays. keep_camera: a reload of an
   // edited scene keeps the view. The scene is then prepared (packed, its BVH built) in
   // slices of a few milliseconds (work(), and frame()) and its program built in the

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "app/app.h"
 #include "gpu/gl_objects.h"
@@ -86,6 +87,16 @@ RenderSettings App::render_settings() const {
 }
 
 float App::denoise_blend() const { return error_history_.empty() ? 1.0f : denoise_weight(error_history_.back().rel_mse); }
+
+double App::time_denoise(bool regression) {
+  if (!renderer_ || renderer_->samples() == 0) return -1.0;
+  DenoiseParams& p = renderer_->denoiser().params;
+  const DenoiseParams kept = p;
+  p.min_samples = regression ? 0 : std::numeric_limits<int>::max();
+  const std::vector<double> ms = renderer_->time_denoiser(1.0f);
+  p = kept;
+  return ms[ms.size() / 2];
+}
 
 void App::update_error(double now_ms) {
   const int n = renderer_->samples();

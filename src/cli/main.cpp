@@ -43,16 +43,7 @@ bool denoise_outputs(const Options& o, Renderer& r, const ErrorEstimate& est) {
   r.denoiser().params = o.denoise_params;
   const float automatic = denoise_weight(est.rel_mse, est.known);
   const float weight = o.denoise_weight >= 0.0f ? o.denoise_weight : automatic;
-  r.denoised(weight);
-  glFinish();
-  std::vector<double> ms;
-  for (int i = 0; i < 3; ++i) {
-    const auto t = std::chrono::steady_clock::now();
-    r.denoiser().run(r.accumulator(), weight, r.vertex_array());
-    glFinish();
-    ms.push_back(seconds_since(t) * 1e3);
-  }
-  std::sort(ms.begin(), ms.end());
+  const std::vector<double> ms = r.time_denoiser(weight);
   std::printf("denoised: blend weight %.4f (from the estimated relMSE: %.4f), %d iterations in %.2f ms (median of 3, %.2f..%.2f)\n",
               weight, automatic, r.denoiser().params.iterations, ms[1], ms[0], ms[2]);
   RenderSettings s = r.settings();

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <utility>
 
 namespace pt {
 
@@ -87,21 +89,93 @@ ErrorEstimate combine_error_scaled(const std::vector<ErrorSums>& tiles, int tile
   return combine(tiles, tiles_x, tiles_y, tile, samples, snapshot, exponent, 1.0);
 }
 
-std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
-                                   const std::vector<float>* snapshot, int width, int height, int samples, int tile) {
-  const int tx = (width + tile - 1) / tile, ty = (height + tile - 1) / tile;
-  std::vector<ErrorSums> tiles(size_t(tx) * ty);
+BlockGrid block_sums(const std::vector<float>& mean, const std::vector<float>& variance,
+                     const std::vector<const std::vector<float>*>& snapshots, int width, int height, int block) {
+  BlockGrid g;
+  g.block = block;
+  g.width = width;
+  g.height = height;
+  g.blocks_x = (width + block - 1) / block;
+  g.blocks_y = (height + block - 1) / block;
+  g.sums.assign(size_t(g.blocks_x) * g.blocks_y, BlockSums{});
+  const size_t ns = std::min(snapshots.size(), size_t(BlockSums::kSnapshots));
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const size_t p = (size_t(y) * width + x) * 4;
-      ErrorSums& t = tiles[size_t(y / tile) * tx + x / tile];
-      for (int c = 0; c < 3; ++c) t += error_terms(mean[p + c], variance[p + c], samples, snapshot ? (*snapshot)[p + c] : 0.0);
+      BlockSums& b = g.sums[size_t(y / block) * g.blocks_x + x / block];
+      for (int c = 0; c < 3; ++c) {
+        const double m = mean[p + c], den = m * m + 0.01;
+        b.var += std::max(double(variance[p + c]), 0.0) / den;
+        for (size_t j = 0; j < ns; ++j)
+          if (snapshots[j]) {
+            const double d = m - (*snapshots[j])[p + c];
+            b.diff[j] += d * d / den;
+          }
+      }
+      b.pixels += 1;
     }
+  return g;
+}
+
+namespace {
+
+// Each block's tile of `tile` pixels (a multiple of the block) and its lower left pixel.
+struct BlockAt {
+  int x, y;
+  size_t tile;
+};
+template <class F>
+void for_blocks(const BlockGrid& g, int tile, F&& f) {
+  const int tx = (g.width + tile - 1) / tile;
+  for (int by = 0; by < g.blocks_y; ++by)
+    for (int bx = 0; bx < g.blocks_x; ++bx) {
+      const int x = bx * g.block, y = by * g.block;
+      f(g.sums[size_t(by) * g.blocks_x + bx], BlockAt{x, y, size_t(y / tile) * tx + x / tile});
+    }
+}
+
+// The latest snapshot with 2 k <= limit at pixel (x, y): its index and k (-1, 0: none).
+std::pair<int, int> latest(const std::vector<PixelCounts>& counts, int x, int y, int limit) {
+  int j = -1, k = 0;
+  for (size_t i = 0; i < counts.size() && i < size_t(BlockSums::kSnapshots); ++i) {
+    if (!counts[i].n) continue;
+    const int kv = counts[i].at(x, y);
+    if (kv > k && 2 * kv <= limit) k = kv, j = int(i);
+  }
+  return {j, k};
+}
+
+int common_block(int a, int b) { return std::gcd(std::max(a, 1), std::max(b, 1)); }
+
+// The per-pixel functions' snapshots as a grid's and their counts.
+BlockGrid grid_of(const std::vector<float>& mean, const std::vector<float>* variance, const std::vector<SnapshotView>& views, int width,
+                  int height, int block, std::vector<PixelCounts>& counts) {
+  std::vector<const std::vector<float>*> images;
+  for (const SnapshotView& v : views) {
+    images.push_back(v.mean);
+    counts.push_back(v.counts);
+    block = common_block(block, v.counts.tile);
+  }
+  const std::vector<float> none(variance ? 0 : mean.size(), 0.0f);
+  return block_sums(mean, variance ? *variance : none, images, width, height, block);
+}
+
+}  // namespace
+
+std::vector<ErrorSums> error_tiles(const BlockGrid& g, int snapshot, int samples, int tile) {
+  const int tx = (g.width + tile - 1) / tile, ty = (g.height + tile - 1) / tile;
+  std::vector<ErrorSums> tiles(size_t(tx) * ty);
+  for_blocks(g, tile, [&](const BlockSums& b, const BlockAt& at) {
+    ErrorSums& t = tiles[at.tile];
+    t.count += 3 * b.pixels;
+    if (samples < 2) return;
+    t.iid += b.var / double(samples - 1);
+    if (snapshot >= 0) t.diff += b.diff[snapshot];
+  });
   return tiles;
 }
 
-double snapshot_exponent(const std::vector<float>& mean, const std::vector<SnapshotView>& snapshots, int width, int height,
-                         const PixelCounts& now, double fallback) {
+double snapshot_exponent(const BlockGrid& g, const std::vector<PixelCounts>& counts, const PixelCounts& now, double fallback) {
   // The counts are per tile, so the ratios n / k1 and n / k2 take few distinct values:
   // the differences are summed per pair of ratios, and the bisection evaluates pow() once
   // per pair, not per pixel (per pixel it took seconds at 1920x1080).
@@ -109,41 +183,24 @@ double snapshot_exponent(const std::vector<float>& mean, const std::vector<Snaps
     double d1 = 0, d2 = 0;
   };
   std::map<std::pair<double, double>, Group> groups;
-  Group* last = nullptr;
-  int last_n = -1, last_k1 = -1, last_k2 = -1;
-  size_t pixels = 0;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const int n = now.at(x, y);
-      int k1 = 0, k2 = 0;
-      const std::vector<float>*s1 = nullptr, *s2 = nullptr;
-      for (const SnapshotView& v : snapshots) {
-        const int k = v.counts.at(x, y);
-        if (k > k1 && 2 * k <= n) k1 = k, s1 = v.mean;
-      }
-      for (const SnapshotView& v : snapshots) {
-        const int k = v.counts.at(x, y);
-        if (k > k2 && 2 * k <= k1) k2 = k, s2 = v.mean;
-      }
-      if (!s1 || !s2) continue;
-      const size_t p = (size_t(y) * width + x) * 4;
-      if (n != last_n || k1 != last_k1 || k2 != last_k2) {  // a run of equal counts shares its group
-        last_n = n, last_k1 = k1, last_k2 = k2;
-        last = &groups[{double(n) / k1, double(n) / k2}];
-      }
-      Group& g = *last;
-      for (int c = 0; c < 3; ++c) {
-        g.d1 += error_terms(mean[p + c], 0.0, n, (*s1)[p + c]).diff;
-        g.d2 += error_terms(mean[p + c], 0.0, n, (*s2)[p + c]).diff;
-      }
-      ++pixels;
-    }
-  if (pixels * 8 < size_t(width) * height) return fallback;
+  double pixels = 0;
+  for_blocks(g, g.block, [&](const BlockSums& b, const BlockAt& at) {
+    const int n = now.at(at.x, at.y);
+    const auto [j1, k1] = latest(counts, at.x, at.y, n);
+    if (j1 < 0) return;
+    const auto [j2, k2] = latest(counts, at.x, at.y, k1);
+    if (j2 < 0) return;
+    Group& q = groups[{double(n) / k1, double(n) / k2}];
+    q.d1 += b.diff[j1];
+    q.d2 += b.diff[j2];
+    pixels += b.pixels;
+  });
+  if (pixels * 8 < double(g.width) * g.height) return fallback;
   auto f = [&](double a) {
     double t1 = 0, t2 = 0;
-    for (const auto& [r, g] : groups) {
-      t1 += g.d1 / (std::pow(r.first, a) - 1.0);
-      t2 += g.d2 / (std::pow(r.second, a) - 1.0);
+    for (const auto& [r, q] : groups) {
+      t1 += q.d1 / (std::pow(r.first, a) - 1.0);
+      t2 += q.d2 / (std::pow(r.second, a) - 1.0);
     }
     return t1 - t2;
   };
@@ -157,36 +214,43 @@ double snapshot_exponent(const std::vector<float>& mean, const std::vector<Snaps
   return 0.5 * (lo + hi);
 }
 
+std::vector<ErrorSums> error_tiles(const BlockGrid& g, const std::vector<PixelCounts>& counts, const PixelCounts& now,
+                                   double exponent, int tile) {
+  const int tx = (g.width + tile - 1) / tile, ty = (g.height + tile - 1) / tile;
+  std::vector<ErrorSums> tiles(size_t(tx) * ty);
+  for_blocks(g, tile, [&](const BlockSums& b, const BlockAt& at) {
+    ErrorSums& t = tiles[at.tile];
+    t.count += 3 * b.pixels;
+    const int n = now.at(at.x, at.y);
+    if (n < 2) return;
+    const auto [j, k] = latest(counts, at.x, at.y, n);
+    const double iid = b.var / double(n - 1);
+    t.iid += iid;
+    t.diff += j >= 0 ? b.diff[j] / (std::pow(double(n) / k, exponent) - 1.0) : iid;
+  });
+  return tiles;
+}
+
+std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
+                                   const std::vector<float>* snapshot, int width, int height, int samples, int tile) {
+  std::vector<const std::vector<float>*> snaps;
+  if (snapshot) snaps.push_back(snapshot);
+  return error_tiles(block_sums(mean, variance, snaps, width, height, tile), snapshot ? 0 : -1, samples, tile);
+}
+
+double snapshot_exponent(const std::vector<float>& mean, const std::vector<SnapshotView>& snapshots, int width, int height,
+                         const PixelCounts& now, double fallback) {
+  std::vector<PixelCounts> counts;
+  const BlockGrid g = grid_of(mean, nullptr, snapshots, width, height, now.tile, counts);
+  return snapshot_exponent(g, counts, now, fallback);
+}
+
 std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::vector<float>& variance,
                                    const std::vector<SnapshotView>& snapshots, int width, int height, const PixelCounts& now,
                                    double exponent, int tile) {
-  const int tx = (width + tile - 1) / tile, ty = (height + tile - 1) / tile;
-  std::vector<ErrorSums> tiles(size_t(tx) * ty);
-  int last_n = -1, last_k = -1;
-  double last_scale = 0.0;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const size_t p = (size_t(y) * width + x) * 4;
-      const int n = now.at(x, y);
-      int k = 0;
-      const std::vector<float>* snap = nullptr;
-      for (const SnapshotView& v : snapshots) {
-        const int kv = v.counts.at(x, y);
-        if (kv > k && 2 * kv <= n) k = kv, snap = v.mean;
-      }
-      if (n != last_n || k != last_k) {  // per tile of counts: pow() once per run of equal counts
-        last_n = n, last_k = k;
-        last_scale = snap ? 1.0 / (std::pow(double(n) / k, exponent) - 1.0) : 0.0;
-      }
-      const double scale = last_scale;
-      ErrorSums& t = tiles[size_t(y / tile) * tx + x / tile];
-      for (int c = 0; c < 3; ++c) {
-        ErrorSums e = error_terms(mean[p + c], variance[p + c], n, snap ? (*snap)[p + c] : 0.0);
-        e.diff = snap ? e.diff * scale : e.iid;
-        t += e;
-      }
-    }
-  return tiles;
+  std::vector<PixelCounts> counts;
+  const BlockGrid g = grid_of(mean, &variance, snapshots, width, height, common_block(tile, now.tile), counts);
+  return error_tiles(g, counts, now, exponent, tile);
 }
 
 }  // namespace pt

@@ -116,6 +116,34 @@ std::vector<ErrorSums> error_tiles(const std::vector<float>& mean, const std::ve
 // have two such snapshots.
 double snapshot_exponent(const std::vector<float>& mean, const std::vector<SnapshotView>& snapshots, int width, int height,
                          const PixelCounts& now, double fallback);
+// The estimate from sums over blocks (what render/tile_sums.h reduces the images to on
+// the GPU, one fragment per block, instead of reading three to six float images back):
+// a block of block x block pixels lies inside one tile of counts and one tile of the
+// estimate (block divides both), so each pixel's factors above (1/(n - 1), a snapshot's
+// scale, which snapshot it takes) are one per block, and the functions above are these
+// applied to the blocks' sums.
+struct BlockSums {
+  static constexpr int kSnapshots = 4;
+  double var = 0;                // sum over pixels and channels of max(s, 0) / den (iid: var / (n - 1))
+  double diff[kSnapshots] = {};  // sum of (m - m_j)^2 / den, m_j snapshot j's mean
+  double pixels = 0;
+};
+struct BlockGrid {
+  int block = 1, blocks_x = 0, blocks_y = 0, width = 0, height = 0;
+  std::vector<BlockSums> sums;  // rows bottom to top
+};
+// The sums on the CPU from images (RGBA, rows bottom to top; at most kSnapshots snapshot
+// means, the rest of diff 0): the GPU's reference, and its path where the targets are half floats.
+BlockGrid block_sums(const std::vector<float>& mean, const std::vector<float>& variance,
+                     const std::vector<const std::vector<float>*>& snapshots, int width, int height, int block);
+// error_tiles (uniform: every pixel at `samples`) with snapshot `snapshot` of the grid's
+// (-1: none); `tile` a multiple of the block.
+std::vector<ErrorSums> error_tiles(const BlockGrid& g, int snapshot, int samples, int tile);
+// The adaptive forms: snapshot j's counts are counts[j] (its n null: no snapshot j).
+double snapshot_exponent(const BlockGrid& g, const std::vector<PixelCounts>& counts, const PixelCounts& now, double fallback);
+std::vector<ErrorSums> error_tiles(const BlockGrid& g, const std::vector<PixelCounts>& counts, const PixelCounts& now,
+                                   double exponent, int tile);
+
 // combine_error of those sums (their snapshot terms already scaled): `samples` the mean
 // count (known from 2), `snapshot` whether one was used.
 ErrorEstimate combine_error_scaled(const std::vector<ErrorSums>& tiles, int tiles_x, int tiles_y, int tile, int samples, bool snapshot,

@@ -157,6 +157,9 @@ EMSCRIPTEN_KEEPALIVE void pt_set_denoise(int on) {
   if (g_app) g_app->set_denoise(on != 0);
 }
 
+// The denoiser's cost on the current image in ms, with or without its regression (ptTimeDenoise).
+EMSCRIPTEN_KEEPALIVE double pt_time_denoise(int regression) { return g_app ? g_app->time_denoise(regression != 0) : -1.0; }
+
 // A slice of the scene preparation in progress; 1 while more remains (pt_js_pump_work).
 EMSCRIPTEN_KEEPALIVE int pt_work(double budget_ms) { return g_app && g_app->work(budget_ms) ? 1 : 0; }
 

@@ -108,18 +108,15 @@ void Accumulator::plan_sweep() {
   // earlier sweeps only, render/adaptive.h), and this sweep's budget shared by them.
   const bool uniform = samples_ < params_.uniform_spp;
   if (!uniform && samples_ >= next_refresh_) {
-    std::vector<float> mean, var;
-    read_mean_variance(mean, var);
+    // Per tile, the relative variance per sample as core/metrics.h's terms, s n/(n-1) /
+    // (m^2 + 0.01), averaged over its pixels and channels: the blocks' var sums (one block
+    // per tile) times n/(n-1).
+    const BlockGrid g = block_sums({}, counts_.tile());
     std::vector<double> rel(counts_.pixels().size(), 0.0);
-    for (int y = 0; y < height_; ++y)
-      for (int x = 0; x < width_; ++x) {
-        const size_t p = (size_t(y) * width_ + x) * 4;
-        const int n = counts_.at(x, y);
-        double r = 0;  // the relative variance per sample, as core/metrics.h's terms: s n/(n-1) / (m^2 + 0.01)
-        for (int c = 0; c < 3; ++c) r += double(std::max(var[p + c], 0.0f)) * n / std::max(n - 1, 1) / (double(mean[p + c]) * mean[p + c] + 0.01);
-        rel[size_t(y / counts_.tile()) * counts_.tiles_x() + x / counts_.tile()] += r / 3.0;
-      }
-    for (size_t t = 0; t < rel.size(); ++t) rel[t] /= counts_.pixels()[t];
+    for (size_t t = 0; t < rel.size(); ++t) {
+      const int n = counts_.counts()[t];
+      rel[t] = g.sums[t].var * n / std::max(n - 1, 1) / 3.0 / counts_.pixels()[t];
+    }
     counts_.set_weights(tile_weights(counts_.pixels(), rel, params_.floor));
     next_refresh_ = std::max(samples_ + 1, int(std::ceil(samples_ * params_.refresh)));
   }
@@ -211,6 +208,10 @@ int Accumulator::end_tile(const Tile& t) {
   samples_ += t.spp;
   if (adaptive_) counts_.commit();
   return t.spp;
+}
+
+BlockGrid Accumulator::block_sums(const std::vector<TileSums::Image>& snapshots, int block) const {
+  return sums_.run(radiance(), stats(), current_fbo(), snapshots, width_, height_, block, format_, vao_);
 }
 
 void Accumulator::read_mean_variance(std::vector<float>& mean, std::vector<float>& variance) const {

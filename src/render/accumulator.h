@@ -13,6 +13,7 @@
 #include "gpu/program.h"
 #include "gpu/texture.h"
 #include "render/adaptive.h"
+#include "render/tile_sums.h"
 
 namespace pt {
 
@@ -114,6 +115,12 @@ class Accumulator {
   // Both at once (two read-backs instead of four): mean RGB (A as read_radiance) and variance.
   void read_mean_variance(std::vector<float>& mean, std::vector<float>& variance) const;
   RenderCounters counters() const;
+  // The error estimate's sums over blocks of `block` pixels against up to four snapshot
+  // means, reduced on the GPU (render/tile_sums.h): what the estimate and adaptive
+  // sampling's weights read instead of the images.
+  BlockGrid block_sums(const std::vector<TileSums::Image>& snapshots, int block) const;
+  // The fullscreen triangle's vertex array (the renderer's), for that pass.
+  void set_vertex_array(GLuint vao) { vao_ = vao; }
 
  private:
   Texture accum_[2];
@@ -141,6 +148,8 @@ class Accumulator {
   void plan_sweep();       // adaptive: this sweep's counts, uploaded
   int targets() const { return aux_ ? 4 : 2; }
   int width_ = 0, height_ = 0;
+  mutable TileSums sums_;  // its program and small targets, made at the first use
+  GLuint vao_ = 0;
 };
 
 }  // namespace pt

@@ -120,6 +120,26 @@ void Denoiser::run(const DenoiseInputs& in, float weight, GLuint vao) {
   last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+std::vector<double> Denoiser::time(const Accumulator& a, float weight, GLuint vao, int runs) {
+  float pixel[4];
+  const auto wait = [&] {
+    glBindFramebuffer(GL_FRAMEBUFFER, out_fbo_.id());
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, pixel);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  };
+  run(a, weight, vao);
+  wait();
+  std::vector<double> ms;
+  for (int i = 0; i < runs; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    run(a, weight, vao);
+    wait();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(ms.begin(), ms.end());
+  return ms;
+}
+
 std::vector<float> Denoiser::read() const { return read_rgba_float(out_fbo_.id(), 0, width_, height_); }
 
 }  // namespace pt

@@ -79,6 +79,11 @@ class Denoiser {
   const Texture& output() const { return out_; }
   std::vector<float> read() const;  // RGB the denoised radiance, A 1; rows bottom to top
   double last_ms() const { return last_ms_; }  // CPU time of the last run's calls (not waited for)
+  // The filter's cost: `runs` runs on the accumulator's mean after one that builds what
+  // they need, each waited for by reading one pixel of the output back (WebGL's finish
+  // does not wait); each run's milliseconds, sorted. The CLI's --denoise and the page's
+  // ptTimeDenoise print their median.
+  std::vector<double> time(const Accumulator& a, float weight, GLuint vao, int runs = 3);
 
  private:
   void pass(int kind, const Texture* input, const Framebuffer& target, const DenoiseInputs& in, GLuint vao, int step = 0,

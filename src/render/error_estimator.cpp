@@ -3,6 +3,8 @@
 
 #include "render/accumulator.h"
 
+#include <numeric>
+
 namespace pt {
 
 
@@ -31,46 +33,31 @@ const ErrorEstimator::Snapshot* ErrorEstimator::usable(int samples) const {
 }
 
 std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot* s, double* exponent) const {
-  const int w = a.width(), h = a.height();
-  std::vector<float> mean, var;
-  a.read_mean_variance(mean, var);
-  if (const TileCounts* c = a.tile_counts()) {
-    // Each tile of counts takes the latest snapshot at half its count or less: only
-    // those snapshots are read back.
-    const std::vector<int>& n = c->counts();
-    std::vector<bool> used(kSnapshots, false);
-    const bool current = a.epoch() == epoch_ && w == width_ && h == height_;  // else they are another image's
-    // (and the one before it, at half that or less, for the exponent: snapshot_exponent)
-    for (size_t t = 0; t < n.size() && current; ++t) {
-      int half = n[t];
-      for (int pick = 0; pick < 2; ++pick) {
-        int best = -1;
-        for (int i = 0; i < kSnapshots; ++i) {
-          const Snapshot& q = snaps_[i];
-          if (q.samples > 0 && q.counts.size() == n.size() && 2 * q.counts[t] <= half && q.counts[t] > 0 &&
-              (best < 0 || q.counts[t] > snaps_[best].counts[t]))
-            best = i;
-        }
-        if (best < 0) break;
-        used[size_t(best)] = true;
-        half = snaps_[best].counts[t];
-      }
-    }
-    std::vector<std::vector<float>> images(kSnapshots);
-    std::vector<SnapshotView> views;
-    for (int i = 0; i < kSnapshots; ++i) {
-      if (!used[size_t(i)]) continue;
-      images[size_t(i)] = read_rgba_float(snaps_[i].fbo.id(), 0, w, h);
-      views.push_back({&images[size_t(i)], PixelCounts{c->tile(), c->tiles_x(), &snaps_[i].counts}});
-    }
-    const PixelCounts now{c->tile(), c->tiles_x(), &n};
-    const double decay = snapshot_exponent(mean, views, w, h, now, history_.exponent());
-    if (exponent) *exponent = decay;
-    return error_tiles(mean, var, views, w, h, now, decay, kTile);
+  // The images are reduced on the GPU to sums over blocks (render/tile_sums.h), against
+  // every snapshot of this image at once; only those are read back.
+  const bool current = a.epoch() == epoch_ && a.width() == width_ && a.height() == height_;  // else they are another image's
+  std::vector<TileSums::Image> images(kSnapshots);
+  std::vector<PixelCounts> counts(kSnapshots);
+  const TileCounts* c = a.tile_counts();
+  for (int i = 0; i < kSnapshots && current; ++i) {
+    const Snapshot& q = snaps_[i];
+    if (q.samples <= 0 || (c && q.counts.size() != c->counts().size())) continue;
+    images[size_t(i)] = {&q.mean, q.fbo.id()};
+    if (c) counts[size_t(i)] = PixelCounts{c->tile(), c->tiles_x(), &q.counts};
   }
-  std::vector<float> snap;
-  if (s) snap = read_rgba_float(s->fbo.id(), 0, w, h);
-  return error_tiles(mean, var, s ? &snap : nullptr, w, h, a.samples(), kTile);
+  if (c) {
+    // Each tile of counts takes the latest snapshot at half its count or less, and the one
+    // before it, at half that or less, for the exponent (core/metrics.h).
+    const BlockGrid g = a.block_sums(images, std::gcd(kTile, c->tile()));
+    const PixelCounts now{c->tile(), c->tiles_x(), &c->counts()};
+    const double decay = snapshot_exponent(g, counts, now, history_.exponent());
+    if (exponent) *exponent = decay;
+    return error_tiles(g, counts, now, decay, kTile);
+  }
+  const int slot = s ? int(s - snaps_) : -1;
+  std::vector<TileSums::Image> one(kSnapshots);
+  if (s) one[size_t(slot)] = images[size_t(slot)];
+  return error_tiles(a.block_sums(one, kTile), slot, a.samples(), kTile);
 }
 
 void ErrorEstimator::sweep_done(const Accumulator& a) {

@@ -40,6 +40,7 @@ Renderer::Renderer() : limits_(checked_limits()), vao_(make_vertex_array()), dis
   glGetIntegerv(GL_MINOR_VERSION, &minor);
   compute_supported_ = (major > 3 || (major == 3 && minor >= 1)) && accum_.format() == GL_RGBA32F;
 #endif
+  accum_.set_vertex_array(vao_);
   resize(1, 1);
 }
 
@@ -313,6 +314,12 @@ const Texture& Renderer::denoised(float weight) const {
 std::vector<float> Renderer::read_denoised(float weight) const {
   denoised(weight);
   return denoiser_.read();
+}
+
+std::vector<double> Renderer::time_denoiser(float weight, int runs) const {
+  const std::vector<double> ms = denoiser_.time(accum_, weight, vao_, runs);
+  denoised_ = {};
+  return ms;
 }
 
 std::vector<float> Renderer::read_radiance() const { return accum_.read_radiance(); }

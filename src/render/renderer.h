@@ -135,6 +135,9 @@ class Renderer {
   // filtered again only when the samples, the image or w changed; the accumulator is only read.
   const Texture& denoised(float weight) const;
   std::vector<float> read_denoised(float weight) const;  // RGB radiance, A 1
+  // The denoiser's cost on the current mean with its params as they are (Denoiser::time:
+  // ms of each run, sorted); what shown() holds is filtered again at its next use.
+  std::vector<double> time_denoiser(float weight, int runs = 3) const;
   Denoiser& denoiser() const { return denoiser_; }
   const Accumulator& accumulator() const { return accum_; }
   GLuint vertex_array() const { return vao_; }  // the fullscreen triangle's (no attributes)

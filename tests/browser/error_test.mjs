@@ -11,7 +11,7 @@
 // estimate (read-backs and sums) at 128x128 and at 960x640 (the canvas, the closed room).
 // The denoiser's toggle (ptSetDenoise, as the panel's checkbox) at 8 samples: off shows
 // another image, on the same one again, and the accumulation (its bytes, its sample count,
-// its restarts) never changes. The coarse first image (render/coarse.h) at 1280x800: from
+// its restarts) never changes; then its cost at 512x512 (ptTimeDenoise). The coarse first image (render/coarse.h) at 1280x800: from
 // the frame the scene is ready to the first frame whose canvas has no black row (read
 // from the canvas right after each of the page's frames), under 2 s, and that image is a
 // coarse level. Screenshots go to the out folder (error-first-image.png is that frame's
@@ -158,6 +158,21 @@ async function denoiser(context, url) {
                          radianceSame: [same(on.radiance, off.radiance), same(on.radiance, again.radiance)] }));
   check("no console errors (denoiser toggle)", errors.length === 0, errors.join("; "));
   await page.close();
+
+  // Its cost at 512x512 (issue 14): ptTimeDenoise runs the filter on the current image, each
+  // run waited for (a pixel read back), the median of 3; the regression forced off (the
+  // a-trous passes, below the gate) and on (from 24 spp), at 1 sample here.
+  const errors2 = [];
+  const big = await openPage(context, `${url}?scene=${scene}&size=512x512&limit=1`, errors2);
+  await until(big, () => window.ptLoadStatus().samples >= 1);
+  const atrous = await big.evaluate(() => window.ptTimeDenoise(false));
+  const regression = await big.evaluate(() => window.ptTimeDenoise(true));
+  console.log(`# denoiser at 512x512 in this browser: ${atrous.toFixed(1)} ms below the gate (a-trous passes), ` +
+              `${regression.toFixed(1)} ms above it (albedo term and regression too)`);
+  check("the denoiser's cost at 512x512 is measured, the regression's run costing more",
+        atrous > 0 && regression > atrous, `${atrous} ms, ${regression} ms`);
+  check("no console errors (denoiser cost)", errors2.length === 0, errors2.join("; "));
+  await big.close();
 }
 
 // Right after each of the page's frames (the page's requestAnimationFrame callbacks are

@@ -1,0 +1,87 @@
+// The error estimate's block sums on the GPU (render/tile_sums.h).
+#include "render/tile_sums.h"
+
+#include <string>
+
+#include "shadergen/shadergen.h"
+
+namespace pt {
+
+namespace {
+
+// The variance's channels as the accumulator keeps them, made RGB (Accumulator::read_mean_variance's).
+std::vector<float> variance_of(const std::vector<float>& mean, const std::vector<float>& stats) {
+  std::vector<float> v(mean.size(), 0.0f);
+  for (size_t i = 0; i + 3 < mean.size(); i += 4) {
+    v[i] = stats[i + 2];
+    v[i + 1] = stats[i + 3];
+    v[i + 2] = mean[i + 3];
+  }
+  return v;
+}
+
+}  // namespace
+
+BlockGrid TileSums::run(const Texture& radiance, const Texture& stats, GLuint fbo, const std::vector<Image>& snapshots, int width,
+                        int height, int block, GLenum format, GLuint vao) {
+  const size_t ns = std::min(snapshots.size(), size_t(BlockSums::kSnapshots));
+  if (format != GL_RGBA32F) {
+    const std::vector<float> mean = read_rgba_float(fbo, 0, width, height);
+    const std::vector<float> var = variance_of(mean, read_rgba_float(fbo, 1, width, height));
+    std::vector<std::vector<float>> images(ns);
+    std::vector<const std::vector<float>*> snaps(ns, nullptr);
+    for (size_t j = 0; j < ns; ++j)
+      if (snapshots[j].texture) {
+        images[j] = read_rgba_float(snapshots[j].fbo, 0, width, height);
+        snaps[j] = &images[j];
+      }
+    return block_sums(mean, var, snaps, width, height, block);
+  }
+  BlockGrid g;
+  g.block = block;
+  g.width = width;
+  g.height = height;
+  g.blocks_x = (width + block - 1) / block;
+  g.blocks_y = (height + block - 1) / block;
+  if (out_[0].width() != g.blocks_x || out_[0].height() != g.blocks_y || !out_[0].id()) {
+    for (Texture& t : out_) t = Texture(g.blocks_x, g.blocks_y, GL_RGBA32F, nullptr);
+    fbo_ = Framebuffer(out_[0], out_[1]);
+  }
+  if (!program_.id())
+    program_ = Program(fullscreen_vertex(),
+                       resolve_includes("#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+                                        "#include \"tile_sums.glsl\"\n",
+                                        "<generated tile sums>"));
+  program_.use();
+  program_.set("u_radiance", 0);
+  program_.set("u_stats", 1);
+  const char* names[BlockSums::kSnapshots] = {"u_snap0", "u_snap1", "u_snap2", "u_snap3"};
+  for (int j = 0; j < BlockSums::kSnapshots; ++j) program_.set(names[j], 2 + j);
+  program_.set("u_block", block);
+  program_.set("u_size", glm::ivec2(width, height));
+  radiance.bind(0);
+  stats.bind(1);
+  for (size_t j = 0; j < size_t(BlockSums::kSnapshots); ++j)
+    (j < ns && snapshots[j].texture ? *snapshots[j].texture : radiance).bind(int(2 + j));
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, g.blocks_x, g.blocks_y);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  PT_GL_CHECK("glDrawArrays (tile sums)");
+  const std::vector<float> s0 = read_rgba_float(fbo_.id(), 0, g.blocks_x, g.blocks_y);
+  const std::vector<float> s1 = read_rgba_float(fbo_.id(), 1, g.blocks_x, g.blocks_y);
+  g.sums.resize(size_t(g.blocks_x) * g.blocks_y);
+  for (size_t b = 0; b < g.sums.size(); ++b) {
+    BlockSums& q = g.sums[b];
+    q.var = s0[4 * b];
+    for (int j = 0; j < 3; ++j) q.diff[j] = j < int(ns) && snapshots[size_t(j)].texture ? s0[4 * b + 1 + size_t(j)] : 0.0;
+    q.diff[3] = ns > 3 && snapshots[3].texture ? s1[4 * b] : 0.0;
+    q.pixels = s1[4 * b + 1];
+  }
+  return g;
+}
+
+}  // namespace pt
