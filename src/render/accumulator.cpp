@@ -215,17 +215,7 @@ BlockGrid Accumulator::block_sums(const std::vector<TileSums::Image>& snapshots,
 }
 
 void Accumulator::read_mean_variance(std::vector<float>& mean, std::vector<float>& variance) const {
-  mean = read_rgba_float(fbo_[cur_].id(), 0, width_, height_);
-  variance = read_rgba_float(fbo_[cur_].id(), 1, width_, height_);
-  const float w[3] = {0.2126f, 0.7152f, 0.0722f};  // Rec. 709 luminance, as luminance() in common.glsl
-  for (size_t i = 0; i < mean.size(); i += 4) {
-    const float v[3] = {variance[i + 2], variance[i + 3], mean[i + 3]};
-    float sd = 0.0f;
-    for (int k = 0; k < 3; ++k) sd += w[k] * std::sqrt(std::max(v[k], 0.0f));
-    for (int k = 0; k < 3; ++k) variance[i + k] = v[k];
-    variance[i + 3] = 0.0f;
-    mean[i + 3] = sd * sd;
-  }
+  pt::read_mean_variance(fbo_[cur_].id(), width_, height_, mean, variance);
 }
 
 std::vector<float> Accumulator::read_aux(int k) const {

@@ -1,33 +1,34 @@
 // The error estimate's block sums on the GPU (render/tile_sums.h).
 #include "render/tile_sums.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "shadergen/shadergen.h"
 
 namespace pt {
 
-namespace {
-
-// The variance's channels as the accumulator keeps them, made RGB (Accumulator::read_mean_variance's).
-std::vector<float> variance_of(const std::vector<float>& mean, const std::vector<float>& stats) {
-  std::vector<float> v(mean.size(), 0.0f);
-  for (size_t i = 0; i + 3 < mean.size(); i += 4) {
-    v[i] = stats[i + 2];
-    v[i + 1] = stats[i + 3];
-    v[i + 2] = mean[i + 3];
+void read_mean_variance(GLuint fbo, int w, int h, std::vector<float>& mean, std::vector<float>& variance) {
+  mean = read_rgba_float(fbo, 0, w, h);
+  variance = read_rgba_float(fbo, 1, w, h);
+  const float lw[3] = {0.2126f, 0.7152f, 0.0722f};  // Rec. 709 luminance, as luminance() in common.glsl
+  for (size_t i = 0; i < mean.size(); i += 4) {
+    const float v[3] = {variance[i + 2], variance[i + 3], mean[i + 3]};
+    float sd = 0.0f;
+    for (int k = 0; k < 3; ++k) sd += lw[k] * std::sqrt(std::max(v[k], 0.0f));
+    for (int k = 0; k < 3; ++k) variance[i + k] = v[k];
+    variance[i + 3] = 0.0f;
+    mean[i + 3] = sd * sd;
   }
-  return v;
 }
-
-}  // namespace
 
 BlockGrid TileSums::run(const Texture& radiance, const Texture& stats, GLuint fbo, const std::vector<Image>& snapshots, int width,
                         int height, int block, GLenum format, GLuint vao) {
   const size_t ns = std::min(snapshots.size(), size_t(BlockSums::kSnapshots));
   if (format != GL_RGBA32F) {
-    const std::vector<float> mean = read_rgba_float(fbo, 0, width, height);
-    const std::vector<float> var = variance_of(mean, read_rgba_float(fbo, 1, width, height));
+    std::vector<float> mean, var;
+    read_mean_variance(fbo, width, height, mean, var);
     std::vector<std::vector<float>> images(ns);
     std::vector<const std::vector<float>*> snaps(ns, nullptr);
     for (size_t j = 0; j < ns; ++j)

@@ -14,6 +14,11 @@
 
 namespace pt {
 
+// The accumulator's two targets (attachments 0 and 1 of `fbo`, w x h) read back as the mean
+// (RGB; A a bound on the luminance's variance, as Accumulator::read_radiance) and the
+// variance (RGB; A 0): Accumulator::read_mean_variance, and the half-float path below.
+void read_mean_variance(GLuint fbo, int w, int h, std::vector<float>& mean, std::vector<float>& variance);
+
 class TileSums {
  public:
   // An image's inputs: the mean (RGB; A the blue channel's variance) and the statistics
