@@ -169,6 +169,7 @@ async function main() {
     await until(page, () => window.ptLoadStatus().samples >= 2, null, 120000);
     const done = { loads: 0, losses: 0, edits: 0, reloads: 0 };
     const failures = [];
+    const missed = [];  // edits that did not restart the render (printed; see the check below)
 
     // One shipped scene, loaded from the page's package, rendered to 1 sample.
     const loadNext = async () => {
@@ -201,13 +202,18 @@ async function main() {
         await page.mouse.click(480, 320);
         await until(page, () => window.ptStats().selected >= 0, null, 10000);
       }
-      const before = await page.evaluate(() => window.ptLoadStatus().samples);
+      // A restart (its epoch; the sample count alone, held at the page's limit of 2, can be
+      // back at 2 before a poll sees it change), then a sample of the edited scene.
+      const before = await page.evaluate(() => window.ptLoadStatus().epoch);
       const dir = done.edits % 2 ? -1 : 1;
       await page.mouse.move(800, 103);
       await page.mouse.down();
       for (let k = 1; k <= 3; ++k) await page.mouse.move(800 + dir * 15 * k, 103);
       await page.mouse.up();
-      await until(page, (b) => window.ptLoadStatus().samples >= 1 && window.ptLoadStatus().samples !== b, before, 20000).catch(() => {});
+      const t = Date.now();
+      const took = await until(page, (b) => window.ptLoadStatus().epoch !== b && window.ptLoadStatus().samples >= 1, before, 20000)
+        .then(() => true, () => false);
+      if (!took) missed.push(`edit ${done.edits + 1}: no new image in ${((Date.now() - t) / 1000).toFixed(0)} s`);
       done.edits++;
     };
     const reload = async () => {
@@ -253,6 +259,7 @@ async function main() {
           done.loads >= total.loads && done.losses >= total.losses && done.edits >= total.edits && done.reloads >= total.reloads,
           JSON.stringify(done));
     check("every shipped scene loaded without an error", failures.length === 0, failures.join(" | "));
+    check("every edit restarted the render with a new image within 20 s", missed.length === 0, missed.join("; "));
     check("wasm heap, GL objects and JS heap back within 5% of the first round", within("memory and GL objects", first, last));
 
     // The Cornell box still renders what the native program renders.
