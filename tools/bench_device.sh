@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|fragment|denoise
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|fragment|denoise|denoiseeval
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive, fragment or denoise}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive, fragment, denoise or denoiseeval}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -194,6 +194,13 @@ case "$part" in
       done
     done
     ;;
+  denoiseeval)
+    # The denoiser against references at a page's size (issue 14, docs/denoise.md):
+    # tools/denoise_eval.py at DENOISE_SIZE (512x512), references of DENOISE_REF_SPP
+    # (16384), the fragment pass; its table, and its PNGs in the results.
+    python3 -u tools/denoise_eval.py --bin "$B" --size "${DENOISE_SIZE:-512x512}" --ref-spp "${DENOISE_REF_SPP:-16384}" \
+      --kernel fragment --dir "$w/denoise-eval" ${DENOISE_SCENES:-}
+    ;;
   wave2)
     # The second wave's costs, builds side by side (build/bench/pt-NAME, carried): each
     # scene at 1080p for 5 s in both kernels (the per-pixel variance target, the glTF
@@ -213,5 +220,5 @@ case "$part" in
     done
     ;;
 esac
-rm -f "$w"/*.pfm
+find "$w" -name "*.pfm" -delete
 tar -czf "$out/results-$part.tar.gz" -C "$w" .
