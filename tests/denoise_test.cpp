@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <random>
 
 #include "gl_context.h"
@@ -46,6 +47,20 @@ struct Synthetic {
     Denoiser d;
     d.params = params;
     d.run(DenoiseInputs{&r, &s, &a0, &a1, samples, GL_RGBA32F}, weight, vao);
+    std::vector<float> out = d.read();
+    glDeleteVertexArrays(1, &vao);
+    return out;
+  }
+  // The same in slices (Denoiser::start, advance) of `units` each; `advances` counts them.
+  std::vector<float> denoise_sliced(double units, int& advances, float weight = 1.0f) const {
+    Texture r(w, h, GL_RGBA32F, radiance.data()), s(w, h, GL_RGBA32F, stats.data()), a0(w, h, GL_RGBA32F, aux0.data()),
+        a1(w, h, GL_RGBA32F, aux1.data());
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    Denoiser d;
+    const DenoiseInputs in{&r, &s, &a0, &a1, samples, GL_RGBA32F};
+    d.start(in, weight);
+    for (advances = 1; !d.advance(in, vao, units); ++advances) {}
     std::vector<float> out = d.read();
     glDeleteVertexArrays(1, &vao);
     return out;
@@ -272,4 +287,68 @@ TEST_CASE("denoiser: the auxiliaries leave the raw image byte-identical; the fil
     INFO((compute ? "compute" : "fragment") << " kernel");
     CHECK(raw[0] == raw[1]);
   }
+}
+
+TEST_CASE("denoiser: in slices of a few rows, the same image as one run, bit for bit, below and above the gate", "[gpu][denoise]") {
+  test_gl();
+  for (int n : {4, 64}) {
+    Synthetic s(48, 32);
+    s.samples = n;
+    std::mt19937 rng(11);
+    std::normal_distribution<float> noise(0.0f, 0.05f);
+    for (int y = 0; y < s.h; ++y)
+      for (int x = 0; x < s.w; ++x)
+        s.set(x, y, 0.2f + 0.01f * float(x) + noise(rng), 0.0025f, x < 24 ? 0.5f : 0.6f, 1.0f + 0.02f * float(x));
+    INFO(n << " spp");
+    int advances = 0;
+    // 100 units: 2 rows of an a-trous iteration at 48 pixels a row, 1 of the regression.
+    const std::vector<float> sliced = s.denoise_sliced(100.0, advances, 0.7f);
+    CHECK(advances >= 5 * 32 / 2);  // 5 iterations of 16 slices
+    CHECK(same_rgb(sliced, s.denoise(0.7f)));
+  }
+}
+
+TEST_CASE("denoiser in the renderer, sliced (the page's): raw until a run is complete, then what one run shows; a restart shows raw again", "[gpu][denoise]") {
+  test_gl();
+  Material wall;
+  wall.tint = glm::vec3(0.6f);
+  wall.emission = glm::vec3(1.0f);
+  const Scene scene = closed_room(wall);
+  RenderSettings st;
+  st.aux = true;
+  st.denoise = 1.0f;
+  st.sample_limit = 4;
+  auto make = [&](bool sliced) {
+    auto r = std::make_unique<Renderer>();
+    r->resize(40, 30);
+    r->set_settings(st);
+    r->set_sliced_denoise(sliced);
+    r->set_scene(scene);
+    while (!r->converged()) r->step();
+    return r;
+  };
+  const auto whole = make(false), sliced = make(true);
+  RenderSettings raw_st = st;
+  raw_st.denoise = 0.0f;
+  const auto raw = make(false);
+  raw->set_settings(raw_st);  // the same samples shown unfiltered
+  REQUIRE(sliced->denoised_samples() == 0);
+  CHECK(sliced->read_display() == raw->read_display());
+  int frames = 0;
+  while (sliced->denoised_samples() == 0 && frames < 10000) {
+    sliced->advance_denoiser(200.0);  // 5 rows of an a-trous iteration
+    ++frames;
+    if (sliced->denoised_samples() == 0) CHECK(sliced->read_display() == raw->read_display());
+  }
+  INFO(frames << " frames");
+  CHECK(frames > 5 * 30 / 5);
+  CHECK(sliced->denoised_samples() == 4);
+  CHECK(sliced->read_display() == whole->read_display());
+  CHECK(sliced->read_display() != raw->read_display());
+  // A restart: the filtered image is of the last one, so the raw mean is shown again.
+  Camera c = sliced->camera();
+  c.position += glm::vec3(0.01f, 0.0f, 0.0f);
+  sliced->set_camera(c);
+  sliced->step();
+  CHECK(sliced->denoised_samples() == 0);
 }

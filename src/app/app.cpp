@@ -35,6 +35,7 @@ App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make
   // aux off built a second program for each new scene and left one compiling for good.
   settings_.aux = true;
   renderer_->set_settings(settings_);
+  renderer_->set_sliced_denoise(true);
   scan_scenes();
   env_panel_.scan(options_.env_root);
   if (!load_scene(options_.scene)) {
@@ -90,7 +91,7 @@ void App::frame(int fb_w, int fb_h, double now_ms) {
   render_passes(now_ms, dt_ms);
   update_error(now_ms);
   update_auto_exposure();
-  frame_key_ = {fb_w, fb_h, renderer_->width(), renderer_->height(), renderer_->samples(), renderer_->settings()};
+  frame_key_ = {fb_w, fb_h, renderer_->width(), renderer_->height(), renderer_->samples(), renderer_->denoised_samples(), renderer_->settings()};
 }
 
 bool App::present_due(double now_ms) const {
@@ -129,6 +130,13 @@ void App::render_passes(double now_ms, double dt_ms) {
     done = pacer_.frame(*renderer_, settings_, dt_ms, now_ms, preparing(), total_samples_);
   }
   drew_ = done > 0;
+  // The denoiser's slice (Renderer::advance_denoiser): kDenoiseUnits units of its work per
+  // pixel drawn (one draw's worth in a frame without draws), so its share of a frame
+  // follows the draw size the pacer chose: at the smallest draw in SwiftShader, 4 x 128
+  // pixels of scene2 (~13 us each), about as long as the draw (a unit ~0.7 us).
+  const double draw_pixels = double(settings_.band_rows > 0 ? settings_.band_rows : renderer_->height()) *
+                             (settings_.band_columns > 0 ? settings_.band_columns : renderer_->width());
+  renderer_->advance_denoiser(kDenoiseUnits * draw_pixels * std::max(done, 1));
   if (!renderer_->converged()) done_ms_ = -1.0;  // a raised limit resumes the clock
   else if (done_ms_ < 0) done_ms_ = now_ms;
   if (done == 0) {

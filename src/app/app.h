@@ -72,6 +72,7 @@ class App {
   // the panel over it).
   void present(int fb_w, int fb_h, double now_ms);
   static constexpr double kRefreshMs = 250.0, kPartialMs = 100.0, kRawShowMs = 1000.0;
+  static constexpr double kDenoiseUnits = 16.0;  // the denoiser's work per pixel drawn (render_passes)
 
   // Test hooks.
   std::string stats_json() const;                        // see web/index.html: ptStats()
@@ -162,7 +163,7 @@ class App {
   double last_frame_ms_ = -1.0;
   // What the last present() showed (present_due()).
   struct Shown {
-    int fb_w = -1, fb_h = -1, w = -1, h = -1, samples = -1;
+    int fb_w = -1, fb_h = -1, w = -1, h = -1, samples = -1, denoised = -1;  // denoised: the filtered image's samples
     RenderSettings settings;
     bool operator==(const Shown&) const = default;
   };

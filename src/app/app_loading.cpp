@@ -185,6 +185,7 @@ void App::context_restored() {
   present_tex_ = Texture();
   renderer_ = std::make_unique<Renderer>();
   renderer_->set_settings(settings_);
+  renderer_->set_sliced_denoise(true);
   renderer_->set_camera(camera);
   shown_ = false;
   // The kept scene is packed again (in slices), unless another is on its way (its staged

@@ -158,6 +158,7 @@ std::string App::error_fields() const {
   j += ",\"targetRelMSE\":" + json_number(target_relmse_);
   j += ",\"targetReachedAt\":" + std::to_string(target_stop_at_);
   j += ",\"denoise\":" + json_number(denoise_ ? denoise_blend() : 0.0);
+  j += ",\"denoisedSamples\":" + std::to_string(renderer_->denoised_samples());  // of the filtered image shown; 0: raw
   // The coarse first image (render/coarse.h): the divisor of the image shown (1: full
   // resolution) and the coarse levels complete since the restart.
   j += ",\"epoch\":" + std::to_string(renderer_->accumulator().epoch());  // counts restarts

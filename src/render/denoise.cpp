@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "render/accumulator.h"
@@ -35,7 +36,7 @@ DenoiseInputs DenoiseInputs::of(const Accumulator& a) {
 }
 
 void Denoiser::pass(int kind, const Texture* input, const Framebuffer& target, const DenoiseInputs& in, GLuint vao, int step,
-                    float weight, const Texture* noisy) {
+                    float weight, const Texture* noisy, int row, int rows) {
   Program& p = programs_[kind];
   if (kind == 3 && (reg_built_[0] != params.reg_radius || reg_built_[1] != params.reg_stride)) {
     p = Program();
@@ -70,14 +71,33 @@ void Denoiser::pass(int kind, const Texture* input, const Framebuffer& target, c
   glViewport(0, 0, width_, height_);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
-  glDisable(GL_SCISSOR_TEST);
+  const bool band = rows > 0 && (row > 0 || rows < height_);
+  if (band) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, row, width_, rows);
+  } else {
+    glDisable(GL_SCISSOR_TEST);
+  }
   glBindVertexArray(vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   PT_GL_CHECK("glDrawArrays (denoise)");
+  if (band) glDisable(GL_SCISSOR_TEST);
+}
+
+double Denoiser::units(int kind) const {
+  if (kind == 1) return 1.0;
+  if (kind == 3) return double((2 * params.reg_radius + 1) * (2 * params.reg_radius + 1)) / 25.0;
+  return 0.2;
 }
 
 void Denoiser::run(const DenoiseInputs& in, float weight, GLuint vao) {
   const auto t0 = std::chrono::steady_clock::now();
+  start(in, weight);
+  advance(in, vao, std::numeric_limits<double>::infinity());
+  last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void Denoiser::start(const DenoiseInputs& in, float weight) {
   const int w = in.radiance->width(), h = in.radiance->height();
   if (w != width_ || h != height_ || in.format != format_) {
     width_ = w;
@@ -100,24 +120,48 @@ void Denoiser::run(const DenoiseInputs& in, float weight, GLuint vao) {
   // With the regression, the image it fits (the prepare pass's output, or that of a-trous
   // iteration reg_input) is kept aside; the other iterations ping-pong between the two
   // other textures.
+  plan_.clear();
   int cur = 0, keep = -1;
-  pass(0, nullptr, fbo_[cur], in, vao);
+  plan_.push_back({0, -1, cur, 0, -1});
   auto other = [&](int a, int b) { return a != 0 && b != 0 ? 0 : a != 1 && b != 1 ? 1 : 2; };
   for (int i = 0; i <= params.iterations; ++i) {
     if (regress && i == std::min(params.reg_input, params.iterations)) keep = cur;
     if (i == params.iterations) break;
     const int next = other(cur, keep);
-    pass(1, &tex_[cur], fbo_[next], in, vao, 1 << i);
+    plan_.push_back({1, cur, next, 1 << i, -1});
     cur = next;
   }
   if (regress) {
     const int next = other(cur, keep);
-    pass(3, &tex_[cur], fbo_[next], in, vao, 0, 0.0f, &tex_[keep]);
+    plan_.push_back({3, cur, next, 0, keep});
     cur = next;
   }
-  pass(2, &tex_[cur], out_fbo_, in, vao, 0, std::clamp(weight, 0.0f, 1.0f));
+  plan_.push_back({2, cur, -1, 0, -1});
+  next_ = 0;
+  row_ = 0;
+  samples_ = in.samples;
+  weight_ = std::clamp(weight, 0.0f, 1.0f);
+}
+
+bool Denoiser::advance(const DenoiseInputs& inputs, GLuint vao, double budget) {
+  DenoiseInputs in = inputs;
+  in.samples = samples_;  // as planned (the gate; the accumulator may have more by now)
+  for (bool drew = false; next_ < plan_.size() && budget > 0.0; drew = true) {
+    const Pass& p = plan_[next_];
+    const double per_row = double(width_) * units(p.kind);
+    if (drew && budget < per_row) break;  // at least one row a call, else within the budget
+    const int rows = budget >= per_row * (height_ - row_) ? height_ - row_ : std::clamp(int(budget / per_row), 1, height_ - row_);
+    pass(p.kind, p.input >= 0 ? &tex_[p.input] : nullptr, p.target >= 0 ? fbo_[p.target] : out_fbo_, in, vao, p.step,
+         p.kind == 2 ? weight_ : 0.0f, p.noisy >= 0 ? &tex_[p.noisy] : nullptr, row_, rows);
+    budget -= per_row * rows;
+    row_ += rows;
+    if (row_ >= height_) {
+      ++next_;
+      row_ = 0;
+    }
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return next_ >= plan_.size();
 }
 
 std::vector<double> Denoiser::time(const Accumulator& a, float weight, GLuint vao, int runs) {

@@ -76,6 +76,20 @@ class Denoiser {
   // array for the fullscreen triangle (no attributes). Leaves the default framebuffer bound.
   void run(const DenoiseInputs& in, float weight, GLuint vao);
   void run(const Accumulator& a, float weight, GLuint vao) { run(DenoiseInputs::of(a), weight, vao); }
+  // The same run in slices across frames (the page: at 512x512 a run takes 1.3-3.4 s in
+  // SwiftShader, docs/denoise.md, which froze the page that long). start() plans run()'s
+  // passes for in.samples (the gate, the variance's scale) and `weight`; advance() draws
+  // the next bands of rows, about `units` of work (one unit: a pixel of an a-trous
+  // iteration, kUnits), reading `in`'s textures as they are then, and returns true once
+  // output() holds the whole image (which it held in part, the last pass's bands, meanwhile).
+  // run() is start() and one advance() without a limit: the same draws, whole.
+  void start(const DenoiseInputs& in, float weight);
+  bool advance(const DenoiseInputs& in, GLuint vao, double units);
+  bool running() const { return next_ < plan_.size(); }
+  // A pass's work per pixel in units: prepare, an a-trous iteration (25 taps), finish, and
+  // the regression ((2 r + 1)^2 taps: 225 at r = 7, 9 units; measured on llvmpipe at
+  // 512x512: 5 iterations 250 ms each, the regression 2.0 s, docs/denoise.md).
+  double units(int kind) const;
   const Texture& output() const { return out_; }
   std::vector<float> read() const;  // RGB the denoised radiance, A 1; rows bottom to top
   double last_ms() const { return last_ms_; }  // CPU time of the last run's calls (not waited for)
@@ -87,7 +101,16 @@ class Denoiser {
 
  private:
   void pass(int kind, const Texture* input, const Framebuffer& target, const DenoiseInputs& in, GLuint vao, int step = 0,
-            float weight = 0.0f, const Texture* noisy = nullptr);
+            float weight = 0.0f, const Texture* noisy = nullptr, int row = 0, int rows = 0);
+  // A run's passes (start()): kind, the texture read (-1: none), the target (-1: the
+  // output), the a-trous step, the regression's fitted image; the next one and its next row.
+  struct Pass {
+    int kind, input, target, step, noisy;
+  };
+  std::vector<Pass> plan_;
+  size_t next_ = 0;
+  int row_ = 0, samples_ = 0;
+  float weight_ = 0.0f;
   Program programs_[4];  // prepare, one iteration, finish, regression
   int reg_built_[2] = {0, 0};  // the regression program's radius and stride
   Texture tex_[3];  // the a-trous ping-pong, and the regression's input (made only once it runs)

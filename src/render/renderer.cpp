@@ -294,6 +294,7 @@ void Renderer::display(int x, int y) const {
 
 const Texture& Renderer::shown() const {
   if (!settings_.aux || settings_.denoise <= 0.0f || samples() == 0) return accum_.radiance();
+  if (sliced_) return denoised_samples() > 0 ? denoiser_.output() : accum_.radiance();
   // Filtered again at 1, 2, 4, ... samples of an image, not at every sweep: a run costs
   // about one sample of path tracing on a CPU rasteriser (docs/denoise.md).
   if (denoised_.epoch != accum_.epoch() || samples() >= 2 * denoised_.samples || denoiser_.output().width() != width() ||
@@ -307,8 +308,26 @@ const Texture& Renderer::denoised(float weight) const {
       denoiser_.output().width() != width() || denoiser_.output().height() != height()) {
     denoiser_.run(accum_, weight, vao_);
     denoised_ = {accum_.epoch(), samples(), weight};
+    job_ = denoised_;  // a sliced run it interrupted is dropped; the next is due at twice these samples
   }
   return denoiser_.output();
+}
+
+int Renderer::denoised_samples() const {
+  if (!settings_.aux || settings_.denoise <= 0.0f || samples() == 0) return 0;
+  const bool current = denoised_.epoch == accum_.epoch() && denoiser_.output().width() == width() && denoiser_.output().height() == height();
+  return current ? denoised_.samples : 0;
+}
+
+void Renderer::advance_denoiser(double units) {
+  if (!sliced_ || !settings_.aux || settings_.denoise <= 0.0f || samples() == 0) return;
+  const DenoiseInputs in = DenoiseInputs::of(accum_);
+  const bool same = job_.epoch == accum_.epoch() && denoiser_.output().width() == width() && denoiser_.output().height() == height();
+  if (!same || (!denoiser_.running() && samples() >= 2 * job_.samples)) {  // a restart (the run in progress dropped), or due
+    denoiser_.start(in, settings_.denoise);
+    job_ = {accum_.epoch(), samples(), settings_.denoise};
+  }
+  if (denoiser_.running() && denoiser_.advance(in, vao_, units)) denoised_ = job_;
 }
 
 std::vector<float> Renderer::read_denoised(float weight) const {
@@ -318,7 +337,7 @@ std::vector<float> Renderer::read_denoised(float weight) const {
 
 std::vector<double> Renderer::time_denoiser(float weight, int runs) const {
   const std::vector<double> ms = denoiser_.time(accum_, weight, vao_, runs);
-  denoised_ = {};
+  denoised_ = job_ = {};
   return ms;
 }
 

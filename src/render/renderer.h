@@ -135,6 +135,15 @@ class Renderer {
   // filtered again only when the samples, the image or w changed; the accumulator is only read.
   const Texture& denoised(float weight) const;
   std::vector<float> read_denoised(float weight) const;  // RGB radiance, A 1
+  // The page's denoiser, in slices across frames (Denoiser::advance): shown() then shows
+  // the raw mean until a filtered image of this image is complete (the last one while the
+  // next is made), and advance_denoiser(units), called once a frame, starts a run when one
+  // is due (at 1, 2, 4, ... samples of an image, and on a restart) and draws `units` of it.
+  // Off (the command line, the tests): shown() filters whole runs when they are due.
+  void set_sliced_denoise(bool on) { sliced_ = on; }
+  void advance_denoiser(double units);
+  // The samples of the filtered image shown() shows (0: the raw mean).
+  int denoised_samples() const;
   // The denoiser's cost on the current mean with its params as they are (Denoiser::time:
   // ms of each run, sorted); what shown() holds is filtered again at its next use.
   std::vector<double> time_denoiser(float weight, int runs = 3) const;
@@ -210,7 +219,13 @@ class Renderer {
   mutable int ladder_epoch_ = -1;  // accum_'s epoch the ladder belongs to: a restart restarts it
   ErrorEstimator error_;  // snapshots of accum_'s mean for its error estimate
   mutable Denoiser denoiser_;
-  mutable struct { int epoch = -1, samples = -1; float weight = -1.0f; } denoised_;  // what denoiser_ holds
+  struct Filtered {
+    int epoch = -1, samples = -1;
+    float weight = -1.0f;
+  };
+  mutable Filtered denoised_;  // what denoiser_'s output holds, complete
+  mutable Filtered job_;       // the sliced run in progress or last finished (advance_denoiser)
+  bool sliced_ = false;
   SceneTextures scene_;
   ProgramCache programs_;
   Features features_;
