@@ -85,6 +85,19 @@ Synthetic noisy_step(float right_depth) {
   return s;
 }
 
+// A noisy ramp at `samples` spp with an albedo edge and a depth slope: both the albedo term
+// and the regression change it.
+Synthetic noisy_ramp(int samples, unsigned seed) {
+  Synthetic s(48, 32);
+  s.samples = samples;
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> noise(0.0f, 0.05f);
+  for (int y = 0; y < s.h; ++y)
+    for (int x = 0; x < s.w; ++x)
+      s.set(x, y, 0.2f + 0.01f * float(x) + noise(rng), 0.0025f, x < 24 ? 0.5f : 0.6f, 1.0f + 0.02f * float(x));
+  return s;
+}
+
 double column_mean(const Synthetic& s, const std::vector<float>& img, int x) {
   double m = 0;
   for (int y = 0; y < s.h; ++y) m += s.at(img, x, y);
@@ -195,16 +208,7 @@ TEST_CASE("denoiser: a linear ramp of radiance on a plane comes back to the bord
 TEST_CASE("denoiser: below min_samples the output is the a-trous passes' alone bit for bit, from it not", "[gpu][denoise]") {
   test_gl();
   // A noisy ramp with an albedo edge: both the albedo term and the regression change it.
-  auto make = [](int samples) {
-    Synthetic s(48, 32);
-    s.samples = samples;
-    std::mt19937 rng(5);
-    std::normal_distribution<float> noise(0.0f, 0.05f);
-    for (int y = 0; y < s.h; ++y)
-      for (int x = 0; x < s.w; ++x)
-        s.set(x, y, 0.2f + 0.01f * float(x) + noise(rng), 0.0025f, x < 24 ? 0.5f : 0.6f, 1.0f + 0.02f * float(x));
-    return s;
-  };
+  auto make = [](int samples) { return noisy_ramp(samples, 5); };
   DenoiseParams atrous;  // main's filter: no albedo term, no regression
   atrous.sigma_a = 0.0f;
   atrous.reg_radius = 0;
@@ -292,13 +296,7 @@ TEST_CASE("denoiser: the auxiliaries leave the raw image byte-identical; the fil
 TEST_CASE("denoiser: in slices of a few rows, the same image as one run, bit for bit, below and above the gate", "[gpu][denoise]") {
   test_gl();
   for (int n : {4, 64}) {
-    Synthetic s(48, 32);
-    s.samples = n;
-    std::mt19937 rng(11);
-    std::normal_distribution<float> noise(0.0f, 0.05f);
-    for (int y = 0; y < s.h; ++y)
-      for (int x = 0; x < s.w; ++x)
-        s.set(x, y, 0.2f + 0.01f * float(x) + noise(rng), 0.0025f, x < 24 ? 0.5f : 0.6f, 1.0f + 0.02f * float(x));
+    const Synthetic s = noisy_ramp(n, 11);
     INFO(n << " spp");
     int advances = 0;
     // 100 units: 2 rows of an a-trous iteration at 48 pixels a row, 1 of the regression.

@@ -89,8 +89,7 @@ ErrorEstimate combine_error_scaled(const std::vector<ErrorSums>& tiles, int tile
   return combine(tiles, tiles_x, tiles_y, tile, samples, snapshot, exponent, 1.0);
 }
 
-BlockGrid block_sums(const std::vector<float>& mean, const std::vector<float>& variance,
-                     const std::vector<const std::vector<float>*>& snapshots, int width, int height, int block) {
+BlockGrid BlockGrid::sized(int width, int height, int block) {
   BlockGrid g;
   g.block = block;
   g.width = width;
@@ -98,6 +97,12 @@ BlockGrid block_sums(const std::vector<float>& mean, const std::vector<float>& v
   g.blocks_x = (width + block - 1) / block;
   g.blocks_y = (height + block - 1) / block;
   g.sums.assign(size_t(g.blocks_x) * g.blocks_y, BlockSums{});
+  return g;
+}
+
+BlockGrid block_sums(const std::vector<float>& mean, const std::vector<float>& variance,
+                     const std::vector<const std::vector<float>*>& snapshots, int width, int height, int block) {
+  BlockGrid g = BlockGrid::sized(width, height, block);
   const size_t ns = std::min(snapshots.size(), size_t(BlockSums::kSnapshots));
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {

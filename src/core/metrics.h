@@ -131,6 +131,9 @@ struct BlockSums {
 struct BlockGrid {
   int block = 1, blocks_x = 0, blocks_y = 0, width = 0, height = 0;
   std::vector<BlockSums> sums;  // rows bottom to top
+  // The grid of a width x height image in blocks of `block` (the last row and column cut
+  // short), its sums zero.
+  static BlockGrid sized(int width, int height, int block);
 };
 // The sums on the CPU from images (RGBA, rows bottom to top; at most kSnapshots snapshot
 // means, the rest of diff 0): the GPU's reference, and its path where the targets are half floats.

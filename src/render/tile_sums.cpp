@@ -38,12 +38,7 @@ BlockGrid TileSums::run(const Texture& radiance, const Texture& stats, GLuint fb
       }
     return block_sums(mean, var, snaps, width, height, block);
   }
-  BlockGrid g;
-  g.block = block;
-  g.width = width;
-  g.height = height;
-  g.blocks_x = (width + block - 1) / block;
-  g.blocks_y = (height + block - 1) / block;
+  BlockGrid g = BlockGrid::sized(width, height, block);
   if (out_[0].width() != g.blocks_x || out_[0].height() != g.blocks_y || !out_[0].id()) {
     for (Texture& t : out_) t = Texture(g.blocks_x, g.blocks_y, GL_RGBA32F, nullptr);
     fbo_ = Framebuffer(out_[0], out_[1]);
@@ -74,7 +69,6 @@ BlockGrid TileSums::run(const Texture& radiance, const Texture& stats, GLuint fb
   PT_GL_CHECK("glDrawArrays (tile sums)");
   const std::vector<float> s0 = read_rgba_float(fbo_.id(), 0, g.blocks_x, g.blocks_y);
   const std::vector<float> s1 = read_rgba_float(fbo_.id(), 1, g.blocks_x, g.blocks_y);
-  g.sums.resize(size_t(g.blocks_x) * g.blocks_y);
   for (size_t b = 0; b < g.sums.size(); ++b) {
     BlockSums& q = g.sums[b];
     q.var = s0[4 * b];
