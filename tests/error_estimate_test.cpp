@@ -125,6 +125,56 @@ TEST_CASE("error estimate: tiles and the image agree, and there is no estimate b
   CHECK_FALSE(combine_error(error_tiles(mean, var, nullptr, w, h, 1), 2, 2, 32, 1, 0, 1.0).known);
 }
 
+TEST_CASE("error estimate: a firefly's own mean does not hide its error; an emitter's rim keeps its mean", "[error]") {
+  // 96x96 pixels of 16 independent samples each: 0.4 (+-10%) per sample, and with
+  // probability 0.003 a firefly of 80 instead (r = 0.4 + 0.24 = 0.64 per channel). At
+  // 16 spp 4.7% of the pixels hold one and nearly all of the true error; a firefly's mean
+  // (5.4) in the denominator read that error as about 1/16 of itself (core/metrics.h,
+  // error_scale). A bright square (20: an emitter) whose rim pixels are partly covered
+  // (10, 5) is no firefly: its neighbours explain it, so its rim keeps its own mean.
+  const int w = 96, h = 96, n = 16;
+  const float kBase = 0.4f, kFire = 80.0f, kP = 0.003f, r = kBase * 1.0f + kP * (kFire - kBase);
+  uint32_t state = 777;
+  auto rnd = [&] {
+    state = state * 1664525u + 1013904223u;
+    return float(state >> 8) / float(1u << 24);
+  };
+  std::vector<float> mean(size_t(w) * h * 4, 0.0f), var(mean.size(), 0.0f);
+  double truth = 0.0;
+  for (size_t p = 0; p < size_t(w) * h; ++p) {
+    double s1 = 0.0, s2 = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double x = rnd() < kP ? kFire : kBase * (0.9 + 0.2 * rnd());
+      s1 += x, s2 += x * x;
+    }
+    const double m = s1 / n;
+    for (int c = 0; c < 3; ++c) {
+      mean[p * 4 + c] = float(m);
+      var[p * 4 + c] = float(s2 / n - m * m);  // about the mean, / n (as the accumulator's)
+    }
+    truth += 3.0 * (m - r) * (m - r) / (double(r) * r + 0.01);
+  }
+  truth /= 3.0 * w * h;
+  const ErrorEstimate e = combine_error(error_tiles(mean, var, nullptr, w, h, n), 3, 3, 32, n, 0, 1.0);
+  std::printf("fireflies, 96x96, 16 spp: true relMSE %.4g, estimated %.4g (%.2f)\n", truth, e.rel_mse, e.rel_mse / truth);
+  CHECK(e.rel_mse == Approx(truth).epsilon(0.25));
+
+  // The emitter: 8x8 pixels at 20 from (40, 40), its rim at 10 and its corners at 5.
+  std::vector<float> lit(size_t(w) * h * 4, 0.2f);
+  for (int y = 39; y <= 48; ++y)
+    for (int x = 39; x <= 48; ++x) {
+      const int edges = (x == 39 || x == 48) + (y == 39 || y == 48);
+      for (int c = 0; c < 3; ++c) lit[(size_t(y) * w + x) * 4 + c] = edges == 0 ? 20.0f : edges == 1 ? 10.0f : 5.0f;
+    }
+  const std::vector<float> scale = error_scale(lit, error_guide(lit, w, h), w, h);
+  int changed = 0;
+  for (size_t i = 0; i < lit.size(); ++i) changed += scale[i] != (i % 4 == 3 ? 0.0f : lit[i]);
+  CHECK(changed == 0);
+  // And a lone bright pixel on the same floor is one: it takes the floor's mean.
+  lit[(size_t(10) * w + 10) * 4] = lit[(size_t(10) * w + 10) * 4 + 1] = lit[(size_t(10) * w + 10) * 4 + 2] = 6.0f;
+  CHECK(error_scale(lit, error_guide(lit, w, h), w, h)[(size_t(10) * w + 10) * 4] == Approx(0.2f));
+}
+
 TEST_CASE("error estimate: the decay's exponent from two snapshots per pixel at unequal counts", "[error]") {
   // Pixels whose differences from their snapshots are exactly the model's, T(k) - T(n)
   // with T(n) = c n^-a, at counts and snapshot counts that differ per tile (adaptive

@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|fragment|denoise|denoiseeval
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|fragment|denoise|denoiseeval|calibration
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive, fragment, denoise or denoiseeval}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive, fragment, denoise, denoiseeval or calibration}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -200,6 +200,30 @@ case "$part" in
     # (16384), the fragment pass; its table, and its PNGs in the results.
     python3 -u tools/denoise_eval.py --bin "$B" --size "${DENOISE_SIZE:-512x512}" --ref-spp "${DENOISE_REF_SPP:-16384}" \
       --kernel fragment --dir "$w/denoise-eval" ${DENOISE_SCENES:-}
+    ;;
+  calibration)
+    # The error estimate against the truth (issue 14, docs/benchmarks.md "The renderer's own
+    # error"): per scene a reference (compute kernel, CALIB_REF_SECONDS, 60), then `bench`
+    # for CALIB_SECONDS (5) with each build of CALIB_BUILDS (carried; default PT_BIN),
+    # whose CSV holds the true and the estimated relMSE at every power of two; the ratio
+    # estimated / true per spp printed. CALIB_SIZE: 512x512.
+    cs="${CALIB_SIZE:-512x512}"
+    for s in ${CALIB_SCENES:-scenes/cornell-box.xml scenes/reference/scene0.xml scenes/seed/05-cornell-blue-yellow.xml scenes/analytic/closed-room.xml}; do
+      n=$(basename "$s" .xml)
+      if [[ $n == closed-room ]]; then ref=(--bounces 64 --reference-value 2)
+      else
+        $B render "$s" --size "$cs" --kernel compute --spp 1000000 --seconds "${CALIB_REF_SECONDS:-60}" --out "$w/$n-ref.pfm" | grep -E "rendered|estimated"
+        ref=(--reference "$w/$n-ref.pfm")
+      fi
+      for v in ${CALIB_BUILDS:-$B}; do
+        echo "== $(basename "$v") $n $cs"
+        $v bench "$s" --size "$cs" --kernel compute --seconds "${CALIB_SECONDS:-5}" "${ref[@]}" --csv "$w/$(basename "$v")-$n.csv" | grep -E "spp/s"
+        python3 -c 'import csv,sys
+for r in csv.DictReader(open(sys.argv[1])):
+    if r["est_rel_mse"] and int(r["spp"]) >= 4 and float(r["rel_mse"]) > 0:
+        print("  %6s spp: true %.4g estimated %.4g ratio %.2f (iid alone %.2f, exponent %s)" % (r["spp"], float(r["rel_mse"]), float(r["est_rel_mse"]), float(r["est_rel_mse"]) / float(r["rel_mse"]), float(r["est_rel_mse_iid"]) / float(r["rel_mse"]), r["est_exponent"]))' "$w/$(basename "$v")-$n.csv"
+      done
+    done
     ;;
   wave2)
     # The second wave's costs, builds side by side (build/bench/pt-NAME, carried): each

@@ -90,11 +90,9 @@ float App::denoise_blend() const { return error_history_.empty() ? 1.0f : denois
 
 double App::time_denoise(bool regression) {
   if (!renderer_ || renderer_->samples() == 0) return -1.0;
-  DenoiseParams& p = renderer_->denoiser().params;
-  const DenoiseParams kept = p;
+  DenoiseParams p = renderer_->denoiser().params;
   p.min_samples = regression ? 0 : std::numeric_limits<int>::max();
-  const std::vector<double> ms = renderer_->time_denoiser(1.0f);
-  p = kept;
+  const std::vector<double> ms = renderer_->time_denoiser(1.0f, 3, &p);
   return ms[ms.size() / 2];
 }
 

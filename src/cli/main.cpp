@@ -183,6 +183,23 @@ int run_render(const Options& o) {
     }
     std::printf("wrote %s (samples per pixel)\n", o.out_spp.c_str());
   }
+  if (!o.out_variance.empty()) {
+    std::vector<float> v = r.read_variance();  // about the mean, / samples
+    const TileCounts* c = r.accumulator().tile_counts();
+    for (int y = 0; y < o.height; ++y)
+      for (int x = 0; x < o.width; ++x) {
+        const int n = c ? c->at(x, y) : r.samples();
+        for (int k = 0; k < 3; ++k) {
+          float& px = v[(size_t(y) * o.width + x) * 4 + k];
+          px = n > 1 ? std::max(px, 0.0f) / float(n - 1) : 0.0f;
+        }
+      }
+    if (!write_pfm(o.out_variance, o.width, o.height, v)) {
+      std::fprintf(stderr, "pathtracer: cannot write %s\n", o.out_variance.c_str());
+      return 1;
+    }
+    std::printf("wrote %s (variance of each pixel's mean)\n", o.out_variance.c_str());
+  }
   if (settings.aux && !denoise_outputs(o, r, est)) return 1;
   return st.bad == 0 && counters.bad_samples == 0 ? 0 : 3;
 }

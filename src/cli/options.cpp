@@ -50,6 +50,8 @@ const char* const kUsage =
     "        blended with the raw by --denoise-weight W (0..1; default auto: from the estimated relMSE);\n"
     "        --out-aux PREFIX writes PREFIX-albedo.pfm, PREFIX-normal.pfm, PREFIX-depth.pfm (implies --denoise);\n"
     "        --out-spp FILE.pfm: each pixel's sample count (with --adaptive on, its tile's)\n"
+    "        --out-variance FILE.pfm: per pixel and channel, the estimated variance of its mean\n"
+    "        (its samples' variance / (count - 1): the expected squared error if they are independent)\n"
     "        --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L[,SIGMA_A,REG_RADIUS,REG_STRIDE,REG_REL,REG_SD,REG_RIDGE,REG_INPUT,MIN_SAMPLES]\n"
     "          for tuning (defaults: render/denoise.h)\n"
     "        --count-ops: count the traversal's box and primitive tests and print them per ray (a\n"
@@ -136,6 +138,8 @@ Options parse_options(int argc, char** argv, bool bench) {
       o.settings.count_ops = true;
     } else if (!bench && a == "--out-spp") {
       o.out_spp = next();
+    } else if (!bench && a == "--out-variance") {
+      o.out_variance = next();
     } else if (a == "--env") {
       o.env = next();
     } else if (!bench && a == "--spp") {

@@ -23,6 +23,7 @@ struct Options {
   float denoise_weight = -1.0f;
   std::string out_aux;
   std::string out_spp;  // render: each pixel's sample count, .pfm
+  std::string out_variance;  // render: each pixel's estimated variance of its mean, .pfm
   DenoiseParams denoise_params;  // --denoise-params ITERATIONS,SIGMA_Z,SIGMA_N,SIGMA_L (tuning)
   RenderSettings settings;
   std::vector<std::string> given;  // the flags given: they win over the scene's <Render>

@@ -24,19 +24,8 @@ ErrorMetrics image_error(const std::vector<float>& image, const std::vector<floa
   return {rel / double(n), std::sqrt(sq / double(n))};
 }
 
-ErrorSums error_terms(double mean, double variance, int samples, double snapshot) {
-  ErrorSums e;
-  e.count = 1;
-  if (samples < 2) return e;
-  const double v = std::max(variance, 0.0) / double(samples - 1);
-  const double den = mean * mean + 0.01;
-  e.iid = v / den;
-  e.diff = (mean - snapshot) * (mean - snapshot) / den;
-  return e;
-}
-
 void ErrorHistory::record(int samples, double diff_mean) {
-  if (samples < 4 || !(diff_mean > 0)) return;
+  if (samples < kFirstPoint || !(diff_mean > 0)) return;
   const double x = std::log(double(samples));
   if (!points_.empty() && !(x > points_.back().first)) return;
   points_.push_back({x, std::log(diff_mean)});
@@ -100,16 +89,77 @@ BlockGrid BlockGrid::sized(int width, int height, int block) {
   return g;
 }
 
+namespace {
+float luminance(const float* c) { return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2]; }
+}  // namespace
+
+std::vector<float> error_guide(const std::vector<float>& mean, int width, int height) {
+  std::vector<float> lum(size_t(width) * height), guide(lum.size() * 2);
+  for (size_t p = 0; p < lum.size(); ++p) lum[p] = luminance(&mean[p * 4]);
+  auto sort2 = [](float& a, float& b) {
+    const float lo = std::min(a, b);
+    b = std::max(a, b);
+    a = lo;
+  };
+  for (int y = 0; y < height; ++y) {
+    const float* row[3];
+    for (int dy = -1; dy <= 1; ++dy) row[dy + 1] = &lum[size_t(std::clamp(y + dy, 0, height - 1)) * width];
+    for (int x = 0; x < width; ++x) {
+      const int xs[3] = {std::max(x - 1, 0), x, std::min(x + 1, width - 1)};
+      float l[9];
+      for (int k = 0; k < 9; ++k) l[k] = row[k / 3][xs[k % 3]];
+      float most = -1.0f;
+      for (int k = 0; k < 9; ++k) {
+        const int dx = k % 3 - 1, dy = k / 3 - 1;
+        const bool inside = x + dx >= 0 && x + dx < width && y + dy >= 0 && y + dy < height;
+        if (k != 4 && inside) most = std::max(most, l[k]);
+      }
+      // The median of nine, the 19 exchanges of error_guide.glsl (any exact selection agrees).
+      sort2(l[1], l[2]), sort2(l[4], l[5]), sort2(l[7], l[8]), sort2(l[0], l[1]), sort2(l[3], l[4]), sort2(l[6], l[7]);
+      sort2(l[1], l[2]), sort2(l[4], l[5]), sort2(l[7], l[8]), sort2(l[0], l[3]), sort2(l[5], l[8]), sort2(l[4], l[7]);
+      sort2(l[3], l[6]), sort2(l[1], l[4]), sort2(l[2], l[5]), sort2(l[4], l[7]), sort2(l[4], l[2]), sort2(l[6], l[4]);
+      sort2(l[4], l[2]);
+      guide[(size_t(y) * width + x) * 2] = l[4];
+      guide[(size_t(y) * width + x) * 2 + 1] = most;
+    }
+  }
+  return guide;
+}
+
+std::vector<float> error_scale(const std::vector<float>& mean, const std::vector<float>& guide, int width, int height) {
+  std::vector<float> d(mean);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const size_t p = size_t(y) * width + x;
+      d[p * 4 + 3] = 0.0f;
+      const float l = luminance(&mean[p * 4]), g = guide[p * 2];
+      if (!(l > kFireflyRatio * g && l >= kFireflyNeighbour * guide[p * 2 + 1])) continue;
+      double sum[3] = {0, 0, 0}, n = 0;
+      const float tol = kGuideTolerance * (g + kGuideFloor);
+      for (int j = std::max(y - kFireflyRadius, 0); j <= std::min(y + kFireflyRadius, height - 1); ++j)
+        for (int i = std::max(x - kFireflyRadius, 0); i <= std::min(x + kFireflyRadius, width - 1); ++i) {
+          const size_t q = size_t(j) * width + i;
+          if (q == p || !(std::abs(guide[q * 2] - g) <= tol)) continue;
+          for (int c = 0; c < 3; ++c) sum[c] += mean[q * 4 + c];
+          n += 1;
+        }
+      if (n > 0)
+        for (int c = 0; c < 3; ++c) d[p * 4 + c] = std::min(d[p * 4 + c], float(sum[c] / n));
+    }
+  return d;
+}
+
 BlockGrid block_sums(const std::vector<float>& mean, const std::vector<float>& variance,
                      const std::vector<const std::vector<float>*>& snapshots, int width, int height, int block) {
   BlockGrid g = BlockGrid::sized(width, height, block);
+  const std::vector<float> scale = error_scale(mean, error_guide(mean, width, height), width, height);
   const size_t ns = std::min(snapshots.size(), size_t(BlockSums::kSnapshots));
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const size_t p = (size_t(y) * width + x) * 4;
       BlockSums& b = g.sums[size_t(y / block) * g.blocks_x + x / block];
       for (int c = 0; c < 3; ++c) {
-        const double m = mean[p + c], den = m * m + 0.01;
+        const double m = mean[p + c], sc = scale[p + c], den = sc * sc + 0.01;
         b.var += std::max(double(variance[p + c]), 0.0) / den;
         for (size_t j = 0; j < ns; ++j)
           if (snapshots[j]) {

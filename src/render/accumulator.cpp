@@ -81,6 +81,14 @@ Accumulator::Tile Accumulator::begin_tile(const RenderSettings& s) {
   if (next_row_ == 0 && next_column_ == 0) {  // a sweep starts: its sample count is fixed until it ends
     sweep_spp_ = s.spp_per_pass < 1 ? 1 : s.spp_per_pass;
     if (s.sample_limit > 0 && samples_ + sweep_spp_ > s.sample_limit) sweep_spp_ = s.sample_limit - samples_;
+    // Sweeps end at every power of two: the error estimate's snapshots and its decay's
+    // points are taken there (render/error_estimator.h; a sweep across one skipped the
+    // point, and the estimate then depended on how the pacer happened to size the draws).
+    if (samples_ > 0 && !adaptive_) {
+      int next = 1;
+      while (next <= samples_) next *= 2;
+      sweep_spp_ = std::min(sweep_spp_, next - samples_);
+    }
     if (adaptive_) plan_sweep();
   }
   if (next_column_ == 0) {  // a band starts: its rows hold until its last tile is drawn

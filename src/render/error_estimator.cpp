@@ -69,7 +69,7 @@ void ErrorEstimator::sweep_done(const Accumulator& a) {
   // With adaptive sampling only while every tile has the same count (the uniform start):
   // D(n/2, n) of tiles at other ratios is not a point of the same curve.
   const bool equal = !a.tile_counts() || a.tile_counts()->uniform();
-  if (half && 2 * half->samples == n && n >= 4 && equal) {
+  if (half && 2 * half->samples == n && n >= ErrorHistory::kFirstPoint && equal) {
     ErrorSums all;
     for (const ErrorSums& t : sums(a, half)) all += t;
     history_.record(n, all.diff / all.count);

@@ -335,9 +335,12 @@ std::vector<float> Renderer::read_denoised(float weight) const {
   return denoiser_.read();
 }
 
-std::vector<double> Renderer::time_denoiser(float weight, int runs) const {
+std::vector<double> Renderer::time_denoiser(float weight, int runs, const DenoiseParams* params) const {
+  const DenoiseParams kept = denoiser_.params;
+  if (params) denoiser_.params = *params;
   const std::vector<double> ms = denoiser_.time(accum_, weight, vao_, runs);
-  denoised_ = job_ = {};
+  denoiser_.params = kept;
+  denoised_ = job_ = params ? Filtered{} : Filtered{accum_.epoch(), samples(), weight};
   return ms;
 }
 

@@ -144,9 +144,10 @@ class Renderer {
   void advance_denoiser(double units);
   // The samples of the filtered image shown() shows (0: the raw mean).
   int denoised_samples() const;
-  // The denoiser's cost on the current mean with its params as they are (Denoiser::time:
-  // ms of each run, sorted); what shown() holds is filtered again at its next use.
-  std::vector<double> time_denoiser(float weight, int runs = 3) const;
+  // The denoiser's cost on the current mean (Denoiser::time: ms of each run, sorted), with
+  // its params or, for those runs only, `params`; the output then holds this image at
+  // `weight` with its own params (else it is filtered again at its next use).
+  std::vector<double> time_denoiser(float weight, int runs = 3, const DenoiseParams* params = nullptr) const;
   Denoiser& denoiser() const { return denoiser_; }
   const Accumulator& accumulator() const { return accum_; }
   GLuint vertex_array() const { return vao_; }  // the fullscreen triangle's (no attributes)

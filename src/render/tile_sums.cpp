@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "shadergen/shadergen.h"
@@ -43,16 +44,45 @@ BlockGrid TileSums::run(const Texture& radiance, const Texture& stats, GLuint fb
     for (Texture& t : out_) t = Texture(g.blocks_x, g.blocks_y, GL_RGBA32F, nullptr);
     fbo_ = Framebuffer(out_[0], out_[1]);
   }
-  if (!program_.id())
-    program_ = Program(fullscreen_vertex(),
-                       resolve_includes("#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
-                                        "#include \"tile_sums.glsl\"\n",
-                                        "<generated tile sums>"));
+  auto fragment = [](const char* file, const std::string& defines) {
+    return Program(fullscreen_vertex(), resolve_includes("#version 300 es\nprecision highp float;\nprecision highp int;\n"
+                                                         "precision highp sampler2D;\n" + defines + "#include \"" + file + "\"\n",
+                                                         std::string("<generated ") + file + ">"));
+  };
+  if (!program_.id()) {
+    // core/metrics.h's constants of the firefly test, one source for both sides.
+    char defines[256];
+    std::snprintf(defines, sizeof defines,
+                  "#define FIREFLY_RATIO %#.9g\n#define FIREFLY_NEIGHBOUR %#.9g\n#define GUIDE_TOLERANCE %#.9g\n"
+                  "#define GUIDE_FLOOR %#.9g\n#define FIREFLY_RADIUS %d\n",
+                  double(kFireflyRatio), double(kFireflyNeighbour), double(kGuideTolerance), double(kGuideFloor), kFireflyRadius);
+    program_ = fragment("tile_sums.glsl", defines);
+  }
+  if (!guide_program_.id()) guide_program_ = fragment("error_guide.glsl", "");
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glBindVertexArray(vao);
+  // The firefly test's guide (core/metrics.h, error_guide), a full-size pass of its own.
+  if (guide_.width() != width || guide_.height() != height || !guide_.id()) {
+    guide_ = Texture(width, height, GL_RG32F, nullptr);
+    guide_fbo_ = Framebuffer(guide_);
+  }
+  guide_program_.use();
+  guide_program_.set("u_radiance", 0);
+  guide_program_.set("u_size", glm::ivec2(width, height));
+  radiance.bind(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, guide_fbo_.id());
+  glViewport(0, 0, width, height);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  PT_GL_CHECK("glDrawArrays (error guide)");
   program_.use();
   program_.set("u_radiance", 0);
   program_.set("u_stats", 1);
   const char* names[BlockSums::kSnapshots] = {"u_snap0", "u_snap1", "u_snap2", "u_snap3"};
   for (int j = 0; j < BlockSums::kSnapshots; ++j) program_.set(names[j], 2 + j);
+  program_.set("u_guide", 2 + BlockSums::kSnapshots);
+  guide_.bind(2 + BlockSums::kSnapshots);
   program_.set("u_block", block);
   program_.set("u_size", glm::ivec2(width, height));
   radiance.bind(0);
@@ -61,10 +91,6 @@ BlockGrid TileSums::run(const Texture& radiance, const Texture& stats, GLuint fb
     (j < ns && snapshots[j].texture ? *snapshots[j].texture : radiance).bind(int(2 + j));
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, g.blocks_x, g.blocks_y);
-  glDisable(GL_BLEND);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_SCISSOR_TEST);
-  glBindVertexArray(vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   PT_GL_CHECK("glDrawArrays (tile sums)");
   const std::vector<float> s0 = read_rgba_float(fbo_.id(), 0, g.blocks_x, g.blocks_y);

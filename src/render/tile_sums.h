@@ -5,7 +5,6 @@
 // CPU cost 0.1-0.3 s each on the H100 (docs/benchmarks.md), and adaptive sampling reads the
 // variance back whenever the mean count grows by a quarter (render/adaptive.h).
 #pragma once
-#include <utility>
 #include <vector>
 
 #include "core/metrics.h"
@@ -34,9 +33,9 @@ class TileSums {
                 int block, GLenum format, GLuint vao);
 
  private:
-  Program program_;
-  Texture out_[2];
-  Framebuffer fbo_;
+  Program program_, guide_program_;
+  Texture out_[2], guide_;
+  Framebuffer fbo_, guide_fbo_;
 };
 
 }  // namespace pt
