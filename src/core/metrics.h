@@ -76,7 +76,7 @@ struct ErrorSums {
 // would put its firefly back in (with them, scene0's estimate read 0.74 of the truth at
 // 16 spp, without 0.88). Per channel the smaller of that and m; other pixels keep m.
 // docs/benchmarks.md, "The renderer's own error", measures it against the truth.
-constexpr float kFireflyRatio = 2.0f, kFireflyNeighbour = 0.5f, kGuideTolerance = 0.25f, kGuideFloor = 0.05f;
+constexpr float kFireflyRatio = 2.03f, kFireflyNeighbour = 0.47f, kGuideTolerance = 0.25f, kGuideFloor = 0.05f;
 constexpr int kFireflyRadius = 6;
 // Per pixel: x the median of the 3x3 neighbourhood's luminance (coordinates clamped to the
 // image), y the largest luminance of the neighbours inside the image (-1 for none). RG of
