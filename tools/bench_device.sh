@@ -198,6 +198,18 @@ case "$part" in
     # The denoiser against references at a page's size (issue 14, docs/denoise.md):
     # tools/denoise_eval.py at DENOISE_SIZE (512x512), references of DENOISE_REF_SPP
     # (16384), the fragment pass; its table, and its PNGs in the results.
+    # DENOISE_REF_KERNEL=compute: the references by the compute kernel first (the H100's and
+    # H200's fragment pass runs on a few graphics-capable SMs: a 16384-spp reference of a
+    # mesh scene took longer than a call); denoise_eval.py reuses them.
+    if [[ -n ${DENOISE_REF_KERNEL:-} ]]; then
+      mkdir -p "$w/denoise-eval"
+      for s in ${DENOISE_SCENES:-scenes/cornell-box.xml scenes/reference/scene0.xml scenes/seed/03-balls-solid-table-wood.xml scenes/gltf-instances.xml}; do
+        r="$w/denoise-eval/$(echo "${s#scenes/}" | sed 's/\.xml$//; s#/#-#g')-ref"
+        $B render "$s" --size "${DENOISE_SIZE:-512x512}" --spp "${DENOISE_REF_SPP:-16384}" --spp-per-pass 16 --kernel "$DENOISE_REF_KERNEL" \
+          --out "$r.pfm" --out "$r.png" --out-aux "$r" > "$r.txt"
+        grep -E "rendered|estimated" "$r.txt"
+      done
+    fi
     python3 -u tools/denoise_eval.py --bin "$B" --size "${DENOISE_SIZE:-512x512}" --ref-spp "${DENOISE_REF_SPP:-16384}" \
       --kernel fragment --dir "$w/denoise-eval" ${DENOISE_SCENES:-}
     ;;
