@@ -94,16 +94,24 @@ float luminance(const float* c) { return 0.2126f * c[0] + 0.7152f * c[1] + 0.072
 }  // namespace
 
 std::vector<float> error_guide(const std::vector<float>& mean, int width, int height) {
-  std::vector<float> lum(size_t(width) * height), guide(lum.size() * 2);
-  for (size_t p = 0; p < lum.size(); ++p) lum[p] = luminance(&mean[p * 4]);
+  // Luminance in three rolling rows (not a whole image: large fresh allocations cost page
+  // faults, which made this the slow part at 1920x1080).
+  std::vector<float> guide(size_t(width) * height * 2), rows(size_t(width) * 3);
+  auto row_of = [&](int y) { return &rows[size_t((y % 3 + 3) % 3) * width]; };
+  auto fill = [&](int y) {
+    float* r = row_of(y);
+    for (int x = 0; x < width; ++x) r[x] = luminance(&mean[(size_t(y) * width + x) * 4]);
+  };
   auto sort2 = [](float& a, float& b) {
     const float lo = std::min(a, b);
     b = std::max(a, b);
     a = lo;
   };
+  fill(0);
+  if (height > 1) fill(1);
   for (int y = 0; y < height; ++y) {
-    const float* row[3];
-    for (int dy = -1; dy <= 1; ++dy) row[dy + 1] = &lum[size_t(std::clamp(y + dy, 0, height - 1)) * width];
+    if (y + 1 < height && y >= 1) fill(y + 1);
+    const float* row[3] = {row_of(std::max(y - 1, 0)), row_of(y), row_of(std::min(y + 1, height - 1))};
     for (int x = 0; x < width; ++x) {
       const int xs[3] = {std::max(x - 1, 0), x, std::min(x + 1, width - 1)};
       float l[9];
@@ -126,12 +134,11 @@ std::vector<float> error_guide(const std::vector<float>& mean, int width, int he
   return guide;
 }
 
-std::vector<float> error_scale(const std::vector<float>& mean, const std::vector<float>& guide, int width, int height) {
-  std::vector<float> d(mean);
+std::vector<FireflyScale> firefly_scales(const std::vector<float>& mean, const std::vector<float>& guide, int width, int height) {
+  std::vector<FireflyScale> out;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const size_t p = size_t(y) * width + x;
-      d[p * 4 + 3] = 0.0f;
       const float l = luminance(&mean[p * 4]), g = guide[p * 2];
       if (!(l > kFireflyRatio * g && l >= kFireflyNeighbour * guide[p * 2 + 1])) continue;
       double sum[3] = {0, 0, 0}, n = 0;
@@ -143,28 +150,41 @@ std::vector<float> error_scale(const std::vector<float>& mean, const std::vector
           for (int c = 0; c < 3; ++c) sum[c] += mean[q * 4 + c];
           n += 1;
         }
-      if (n > 0)
-        for (int c = 0; c < 3; ++c) d[p * 4 + c] = std::min(d[p * 4 + c], float(sum[c] / n));
+      if (n <= 0) continue;
+      FireflyScale f{p, {}};
+      for (int c = 0; c < 3; ++c) f.rgb[c] = std::min(mean[p * 4 + c], float(sum[c] / n));
+      out.push_back(f);
     }
+  return out;
+}
+
+std::vector<float> error_scale(const std::vector<float>& mean, const std::vector<float>& guide, int width, int height) {
+  std::vector<float> d(mean);
+  for (size_t p = 3; p < d.size(); p += 4) d[p] = 0.0f;
+  for (const FireflyScale& f : firefly_scales(mean, guide, width, height))
+    for (int c = 0; c < 3; ++c) d[f.pixel * 4 + c] = f.rgb[c];
   return d;
 }
 
 BlockGrid block_sums(const std::vector<float>& mean, const std::vector<float>& variance,
                      const std::vector<const std::vector<float>*>& snapshots, int width, int height, int block) {
   BlockGrid g = BlockGrid::sized(width, height, block);
-  const std::vector<float> scale = error_scale(mean, error_guide(mean, width, height), width, height);
+  const std::vector<FireflyScale> fireflies = firefly_scales(mean, error_guide(mean, width, height), width, height);
+  auto next = fireflies.begin();  // in pixel order, as the loop below
   const size_t ns = std::min(snapshots.size(), size_t(BlockSums::kSnapshots));
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const size_t p = (size_t(y) * width + x) * 4;
       BlockSums& b = g.sums[size_t(y / block) * g.blocks_x + x / block];
+      const float* scale = &mean[p];
+      if (next != fireflies.end() && next->pixel * 4 == p) scale = (next++)->rgb;
       for (int c = 0; c < 3; ++c) {
-        const double m = mean[p + c], sc = scale[p + c], den = sc * sc + 0.01;
-        b.var += std::max(double(variance[p + c]), 0.0) / den;
+        const double m = mean[p + c], sc = scale[c], inv = 1.0 / (sc * sc + 0.01);
+        b.var += std::max(double(variance[p + c]), 0.0) * inv;
         for (size_t j = 0; j < ns; ++j)
           if (snapshots[j]) {
             const double d = m - (*snapshots[j])[p + c];
-            b.diff[j] += d * d / den;
+            b.diff[j] += d * d * inv;
           }
       }
       b.pixels += 1;

@@ -82,6 +82,12 @@ constexpr int kFireflyRadius = 6;
 // image), y the largest luminance of the neighbours inside the image (-1 for none). RG of
 // a two-float image, rows bottom to top.
 std::vector<float> error_guide(const std::vector<float>& mean, int width, int height);
+// The fireflies' m (per channel), in pixel order: the pixels whose m is replaced.
+struct FireflyScale {
+  size_t pixel;
+  float rgb[3];
+};
+std::vector<FireflyScale> firefly_scales(const std::vector<float>& mean, const std::vector<float>& guide, int width, int height);
 // The m each pixel and channel divides by (RGBA, A 0), from `mean` (RGBA) and its guide.
 std::vector<float> error_scale(const std::vector<float>& mean, const std::vector<float>& guide, int width, int height);
 
