@@ -119,7 +119,6 @@ class Accumulator {
   // means, reduced on the GPU (render/tile_sums.h): what the estimate and adaptive
   // sampling's weights read instead of the images.
   BlockGrid block_sums(const std::vector<TileSums::Image>& snapshots, int block) const;
-  void start_sums() const { sums_.start(); }  // TileSums::start
   // The fullscreen triangle's vertex array (the renderer's), for that pass.
   void set_vertex_array(GLuint vao) { vao_ = vao; }
 

@@ -75,10 +75,7 @@ Features Renderer::with_settings(Features f, RenderMode mode) const {
 
 bool Renderer::program_ready(const Scene& scene) { return program_ready(scene, settings_.mode); }
 
-bool Renderer::program_ready(const Scene& scene, RenderMode mode) {
-  accum_.start_sums();  // the error estimate's programs, compiled meanwhile (TileSums::start)
-  return programs_.ready(features_for(scene, mode));
-}
+bool Renderer::program_ready(const Scene& scene, RenderMode mode) { return programs_.ready(features_for(scene, mode)); }
 
 void Renderer::select_program() {
   ProgramCache::Entry& e = programs_.get(with_settings(features_, settings_.mode));

@@ -31,12 +31,10 @@ class TileSums {
   };
   BlockGrid run(const Texture& radiance, const Texture& stats, GLuint fbo, const std::vector<Image>& snapshots, int width, int height,
                 int block, GLenum format, GLuint vao);
-  // Hands its programs to the driver without waiting (run() finishes them at its first
-  // use): a page calls it while a scene loads, so that with KHR_parallel_shader_compile the
-  // compile is not a frame of its own at the first estimate (SwiftShader: ~0.5 s).
-  void start();
+
 
  private:
+  void start();  // both programs handed to the driver (run() waits for them at its first use)
   Program program_, guide_program_;
   Texture out_[2], guide_;
   Framebuffer fbo_, guide_fbo_;
