@@ -84,6 +84,9 @@ Accumulator::Tile Accumulator::begin_tile(const RenderSettings& s) {
     // Sweeps end at every power of two: the error estimate's snapshots and its decay's
     // points are taken there (render/error_estimator.h; a sweep across one skipped the
     // point, and the estimate then depended on how the pacer happened to size the draws).
+    // The samples are the same; only their grouping into passes changes, and with it the
+    // running mean's rounding (within 3.3e-7 relative at 16 spp in passes of 3; with one
+    // sample per pass the images are byte-identical to before).
     if (samples_ > 0 && !adaptive_) {
       int next = 1;
       while (next <= samples_) next *= 2;

@@ -24,23 +24,6 @@ void read_mean_variance(GLuint fbo, int w, int h, std::vector<float>& mean, std:
   }
 }
 
-void TileSums::start() {
-  if (program_.id()) return;
-  auto fragment = [](const char* file, const std::string& defines) {
-    return Program::start(fullscreen_vertex(), resolve_includes("#version 300 es\nprecision highp float;\nprecision highp int;\n"
-                                                                "precision highp sampler2D;\n" + defines + "#include \"" + file + "\"\n",
-                                                                std::string("<generated ") + file + ">"));
-  };
-  // core/metrics.h's constants of the firefly test, one source for both sides.
-  char defines[256];
-  std::snprintf(defines, sizeof defines,
-                "#define FIREFLY_RATIO %#.9g\n#define FIREFLY_NEIGHBOUR %#.9g\n#define GUIDE_TOLERANCE %#.9g\n"
-                "#define GUIDE_FLOOR %#.9g\n#define FIREFLY_RADIUS %d\n",
-                double(kFireflyRatio), double(kFireflyNeighbour), double(kGuideTolerance), double(kGuideFloor), kFireflyRadius);
-  program_ = fragment("tile_sums.glsl", defines);
-  guide_program_ = fragment("error_guide.glsl", "");
-}
-
 BlockGrid TileSums::run(const Texture& radiance, const Texture& stats, GLuint fbo, const std::vector<Image>& snapshots, int width,
                         int height, int block, GLenum format, GLuint vao) {
   const size_t ns = std::min(snapshots.size(), size_t(BlockSums::kSnapshots));
@@ -61,9 +44,21 @@ BlockGrid TileSums::run(const Texture& radiance, const Texture& stats, GLuint fb
     for (Texture& t : out_) t = Texture(g.blocks_x, g.blocks_y, GL_RGBA32F, nullptr);
     fbo_ = Framebuffer(out_[0], out_[1]);
   }
-  start();
-  program_.finish();
-  guide_program_.finish();
+  if (!program_.id()) {
+    auto fragment = [](const char* file, const std::string& defines) {
+      return Program(fullscreen_vertex(), resolve_includes("#version 300 es\nprecision highp float;\nprecision highp int;\n"
+                                                           "precision highp sampler2D;\n" + defines + "#include \"" + file + "\"\n",
+                                                           std::string("<generated ") + file + ">"));
+    };
+    // core/metrics.h's constants of the firefly test, one source for both sides.
+    char defines[256];
+    std::snprintf(defines, sizeof defines,
+                  "#define FIREFLY_RATIO %#.9g\n#define FIREFLY_NEIGHBOUR %#.9g\n#define GUIDE_TOLERANCE %#.9g\n"
+                  "#define GUIDE_FLOOR %#.9g\n#define FIREFLY_RADIUS %d\n",
+                  double(kFireflyRatio), double(kFireflyNeighbour), double(kGuideTolerance), double(kGuideFloor), kFireflyRadius);
+    program_ = fragment("tile_sums.glsl", defines);
+    guide_program_ = fragment("error_guide.glsl", "");
+  }
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);

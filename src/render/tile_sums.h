@@ -34,7 +34,6 @@ class TileSums {
 
 
  private:
-  void start();  // both programs handed to the driver (run() waits for them at its first use)
   Program program_, guide_program_;
   Texture out_[2], guide_;
   Framebuffer fbo_, guide_fbo_;
