@@ -249,53 +249,61 @@ TEST_CASE("error estimate under adaptive sampling at 1920x1080 takes well under 
 
 TEST_CASE("error estimate: the GPU's block sums are the CPU's, and so is the half-float path", "[gpu][error]") {
   // Random means, variances (some negative: rounding leaves those, and they count as 0)
-  // and snapshots on 70x45 pixels in blocks of 16 (the last row and column cut short);
-  // snapshot 2 absent. render/tile_sums.h's pass against core/metrics.h's block_sums.
+  // and snapshots on 70x45 and 45x70 pixels (an odd row, then column, of the firefly
+  // passes' 2x2 texels) in blocks of 16 and 7 (odd: blocks that start inside a texel), the
+  // last row and column cut short; snapshot 2 absent. render/tile_sums.h's passes against
+  // core/metrics.h's block_sums. Among the random means many are fireflies.
   test_gl();
-  const int w = 70, h = 45, block = 16;
-  uint32_t state = 12345;
-  auto rnd = [&] {
-    state = state * 1664525u + 1013904223u;
-    return float(state >> 8) / float(1u << 24);
+  struct Size {
+    int w, h, block;
   };
-  std::vector<float> mean(size_t(w) * h * 4), stats(mean.size());
-  for (size_t i = 0; i < mean.size(); ++i) {
-    mean[i] = 3.0f * rnd() * rnd();
-    stats[i] = rnd() - 0.05f;
-  }
-  std::vector<std::vector<float>> snaps(4, std::vector<float>(mean.size()));
-  for (auto& s : snaps)
-    for (size_t i = 0; i < s.size(); ++i) s[i] = mean[i] + 0.3f * (rnd() - 0.5f);
-  std::vector<float> var(mean.size(), 0.0f);  // the accumulator's layout made RGB
-  for (size_t i = 0; i < mean.size(); i += 4) var[i] = stats[i + 2], var[i + 1] = stats[i + 3], var[i + 2] = mean[i + 3];
-  const BlockGrid want = block_sums(mean, var, {&snaps[0], &snaps[1], nullptr, &snaps[3]}, w, h, block);
-
-  const Texture rt(w, h, GL_RGBA32F, mean.data()), st(w, h, GL_RGBA32F, stats.data());
-  const Framebuffer fbo(rt, st);
-  std::vector<Texture> st_tex;
-  std::vector<Framebuffer> st_fbo;
-  for (auto& s : snaps) st_tex.emplace_back(w, h, GL_RGBA32F, s.data());
-  for (auto& t : st_tex) st_fbo.emplace_back(t);
-  std::vector<TileSums::Image> images(4);
-  for (int j : {0, 1, 3}) images[size_t(j)] = {&st_tex[size_t(j)], st_fbo[size_t(j)].id()};
-  GLuint vao = 0;
-  glGenVertexArrays(1, &vao);
-  TileSums sums;
-  for (GLenum format : {GLenum(GL_RGBA32F), GLenum(GL_RGBA16F)}) {
-    INFO((format == GL_RGBA32F ? "on the GPU" : "read back (half-float targets)"));
-    const BlockGrid got = sums.run(rt, st, fbo.id(), images, w, h, block, format, vao);
-    REQUIRE(got.blocks_x == 5);
-    REQUIRE(got.blocks_y == 3);
-    REQUIRE(got.sums.size() == want.sums.size());
-    for (size_t b = 0; b < want.sums.size(); ++b) {
-      INFO("block " << b);
-      CHECK(got.sums[b].pixels == want.sums[b].pixels);
-      CHECK(got.sums[b].var == Approx(want.sums[b].var).epsilon(1e-5));
-      for (int j = 0; j < 4; ++j) CHECK(got.sums[b].diff[j] == Approx(want.sums[b].diff[j]).epsilon(1e-5));
-      CHECK(got.sums[b].diff[2] == 0.0);
+  for (const Size sz : {Size{70, 45, 16}, Size{45, 70, 7}}) {
+    const int w = sz.w, h = sz.h, block = sz.block;
+    INFO(w << "x" << h << " in blocks of " << block);
+    uint32_t state = 12345;
+    auto rnd = [&] {
+      state = state * 1664525u + 1013904223u;
+      return float(state >> 8) / float(1u << 24);
+    };
+    std::vector<float> mean(size_t(w) * h * 4), stats(mean.size());
+    for (size_t i = 0; i < mean.size(); ++i) {
+      mean[i] = 3.0f * rnd() * rnd();
+      stats[i] = rnd() - 0.05f;
     }
+    std::vector<std::vector<float>> snaps(4, std::vector<float>(mean.size()));
+    for (auto& s : snaps)
+      for (size_t i = 0; i < s.size(); ++i) s[i] = mean[i] + 0.3f * (rnd() - 0.5f);
+    std::vector<float> var(mean.size(), 0.0f);  // the accumulator's layout made RGB
+    for (size_t i = 0; i < mean.size(); i += 4) var[i] = stats[i + 2], var[i + 1] = stats[i + 3], var[i + 2] = mean[i + 3];
+    const BlockGrid want = block_sums(mean, var, {&snaps[0], &snaps[1], nullptr, &snaps[3]}, w, h, block);
+
+    const Texture rt(w, h, GL_RGBA32F, mean.data()), st(w, h, GL_RGBA32F, stats.data());
+    const Framebuffer fbo(rt, st);
+    std::vector<Texture> st_tex;
+    std::vector<Framebuffer> st_fbo;
+    for (auto& s : snaps) st_tex.emplace_back(w, h, GL_RGBA32F, s.data());
+    for (auto& t : st_tex) st_fbo.emplace_back(t);
+    std::vector<TileSums::Image> images(4);
+    for (int j : {0, 1, 3}) images[size_t(j)] = {&st_tex[size_t(j)], st_fbo[size_t(j)].id()};
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    TileSums sums;
+    for (GLenum format : {GLenum(GL_RGBA32F), GLenum(GL_RGBA16F)}) {
+      INFO((format == GL_RGBA32F ? "on the GPU" : "read back (half-float targets)"));
+      const BlockGrid got = sums.run(rt, st, fbo.id(), images, w, h, block, format, vao);
+      REQUIRE(got.blocks_x == (w + block - 1) / block);
+      REQUIRE(got.blocks_y == (h + block - 1) / block);
+      REQUIRE(got.sums.size() == want.sums.size());
+      for (size_t b = 0; b < want.sums.size(); ++b) {
+        INFO("block " << b);
+        CHECK(got.sums[b].pixels == want.sums[b].pixels);
+        CHECK(got.sums[b].var == Approx(want.sums[b].var).epsilon(1e-5));
+        for (int j = 0; j < 4; ++j) CHECK(got.sums[b].diff[j] == Approx(want.sums[b].diff[j]).epsilon(1e-5));
+        CHECK(got.sums[b].diff[2] == 0.0);
+      }
+    }
+    glDeleteVertexArrays(1, &vao);
   }
-  glDeleteVertexArrays(1, &vao);
 }
 
 TEST_CASE("error estimate through the renderer at 1920x1080: the sums on the GPU, not three to six images read back", "[.serial][gpu][error]") {

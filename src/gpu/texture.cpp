@@ -69,6 +69,12 @@ Framebuffer::Framebuffer(const Texture& color0, const Texture& color1, const Tex
   PT_GL_CHECK("glFramebufferTexture2D/glDrawBuffers");
 }
 
+void Framebuffer::attach_depth(const Texture& depth) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, id_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
+  PT_GL_CHECK("glFramebufferTexture2D (depth)");
+}
+
 bool Framebuffer::complete() const {
   glBindFramebuffer(GL_FRAMEBUFFER, id_);
   return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;

@@ -50,6 +50,8 @@ class Framebuffer {
   Framebuffer(const Texture& color0, const Texture& color1);
   // Three colour attachments, all drawn to.
   Framebuffer(const Texture& color0, const Texture& color1, const Texture& color2);
+  // Attaches a depth texture (its internal format a depth format) to this framebuffer.
+  void attach_depth(const Texture& depth) const;
   ~Framebuffer() { reset(); }
   Framebuffer(Framebuffer&& o) noexcept : id_(std::exchange(o.id_, 0u)), made_in_(o.made_in_) {}
   Framebuffer& operator=(Framebuffer&& o) noexcept {

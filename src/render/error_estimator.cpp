@@ -48,7 +48,7 @@ std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot
   if (c) {
     // Each tile of counts takes the latest snapshot at half its count or less, and the one
     // before it, at half that or less, for the exponent (core/metrics.h).
-    const BlockGrid g = a.block_sums(images, std::gcd(kTile, c->tile()));
+    const BlockGrid g = a.block_sums(images, std::gcd(std::gcd(kTile, c->tile()), kSumsBlock));
     const PixelCounts now{c->tile(), c->tiles_x(), &c->counts()};
     const double decay = snapshot_exponent(g, counts, now, history_.exponent());
     if (exponent) *exponent = decay;
@@ -57,7 +57,7 @@ std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot
   const int slot = s ? int(s - snaps_) : -1;
   std::vector<TileSums::Image> one(kSnapshots);
   if (s) one[size_t(slot)] = images[size_t(slot)];
-  return error_tiles(a.block_sums(one, kTile), slot, a.samples(), kTile);
+  return error_tiles(a.block_sums(one, kSumsBlock), slot, a.samples(), kTile);
 }
 
 void ErrorEstimator::sweep_done(const Accumulator& a) {

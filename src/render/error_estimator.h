@@ -19,6 +19,10 @@ class Accumulator;
 class ErrorEstimator {
  public:
   static constexpr int kTile = 32;  // pixels per side of the per-tile estimate
+  // The GPU sums' blocks (render/tile_sums.h), summed into tiles here: smaller than a tile so
+  // that the block grid covers several of llvmpipe's 64x64 bins, which its threads share
+  // (blocks of 32 at 1920x1080 are 60x34 fragments: one bin, one thread).
+  static constexpr int kSumsBlock = 16;
   // After every completed sweep (Renderer::step): at the first sweep end at or past each
   // power of two it records the change since the last one and keeps a copy of the mean.
   void sweep_done(const Accumulator& a);

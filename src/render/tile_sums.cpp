@@ -24,6 +24,46 @@ void read_mean_variance(GLuint fbo, int w, int h, std::vector<float>& mean, std:
   }
 }
 
+void TileSums::fireflies(const Texture& radiance, int width, int height) {
+  const int gw = (width + 1) / 2, gh = (height + 1) / 2;  // packed: a texel per 2x2 pixels
+  if (guide_.width() != gw || guide_.height() != gh || !guide_.id()) {
+    guide_ = Texture(gw, gh, GL_RGBA32F, nullptr);
+    for (Texture& t : scale_) t = Texture(gw, gh, GL_RGBA32F, nullptr);
+    depth_ = Texture(gw, gh, GL_DEPTH_COMPONENT16, nullptr);
+    guide_fbo_ = Framebuffer(guide_);
+    guide_fbo_.attach_depth(depth_);
+    scale_fbo_ = Framebuffer(scale_[0], scale_[1], scale_[2]);
+    scale_fbo_.attach_depth(depth_);
+  }
+  glViewport(0, 0, gw, gh);
+  radiance.bind(0);
+  // The guide, writing depth 0 at the texels with a firefly and 1 elsewhere.
+  guide_program_.use();
+  guide_program_.set("u_radiance", 0);
+  guide_program_.set("u_size", glm::ivec2(width, height));
+  glBindFramebuffer(GL_FRAMEBUFFER, guide_fbo_.id());
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  PT_GL_CHECK("glDrawArrays (error guide)");
+  // The scales, drawn at depth 0.5 where it is greater than the guide's: only the texels
+  // with a firefly run the shader (early depth test).
+  scale_program_.use();
+  scale_program_.set("u_radiance", 0);
+  scale_program_.set("u_guide", 1);
+  scale_program_.set("u_size", glm::ivec2(width, height));
+  guide_.bind(1);
+  glBindFramebuffer(GL_FRAMEBUFFER, scale_fbo_.id());
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_FALSE);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  PT_GL_CHECK("glDrawArrays (error scale)");
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
+}
+
 BlockGrid TileSums::run(const Texture& radiance, const Texture& stats, GLuint fbo, const std::vector<Image>& snapshots, int width,
                         int height, int block, GLenum format, GLuint vao) {
   const size_t ns = std::min(snapshots.size(), size_t(BlockSums::kSnapshots));
@@ -57,32 +97,27 @@ BlockGrid TileSums::run(const Texture& radiance, const Texture& stats, GLuint fb
                   "#define GUIDE_FLOOR %#.9g\n#define FIREFLY_RADIUS %d\n",
                   double(kFireflyRatio), double(kFireflyNeighbour), double(kGuideTolerance), double(kGuideFloor), kFireflyRadius);
     program_ = fragment("tile_sums.glsl", defines);
-    guide_program_ = fragment("error_guide.glsl", "");
+    guide_program_ = fragment("error_guide.glsl", defines);
+    scale_program_ = fragment("error_scale.glsl", defines);
   }
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(vao);
-  // The firefly test's guide (core/metrics.h, error_guide), a full-size pass of its own.
-  if (guide_.width() != width || guide_.height() != height || !guide_.id()) {
-    guide_ = Texture(width, height, GL_RG32F, nullptr);
-    guide_fbo_ = Framebuffer(guide_);
-  }
-  guide_program_.use();
-  guide_program_.set("u_radiance", 0);
-  guide_program_.set("u_size", glm::ivec2(width, height));
-  radiance.bind(0);
-  glBindFramebuffer(GL_FRAMEBUFFER, guide_fbo_.id());
-  glViewport(0, 0, width, height);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  PT_GL_CHECK("glDrawArrays (error guide)");
+  fireflies(radiance, width, height);
   program_.use();
   program_.set("u_radiance", 0);
   program_.set("u_stats", 1);
   const char* names[BlockSums::kSnapshots] = {"u_snap0", "u_snap1", "u_snap2", "u_snap3"};
   for (int j = 0; j < BlockSums::kSnapshots; ++j) program_.set(names[j], 2 + j);
-  program_.set("u_guide", 2 + BlockSums::kSnapshots);
-  guide_.bind(2 + BlockSums::kSnapshots);
+  const int unit = 2 + BlockSums::kSnapshots;
+  program_.set("u_guide", unit);
+  guide_.bind(unit);
+  const char* planes[3] = {"u_scale_r", "u_scale_g", "u_scale_b"};
+  for (int c = 0; c < 3; ++c) {
+    program_.set(planes[c], unit + 1 + c);
+    scale_[c].bind(unit + 1 + c);
+  }
   program_.set("u_block", block);
   program_.set("u_size", glm::ivec2(width, height));
   radiance.bind(0);

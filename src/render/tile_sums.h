@@ -34,9 +34,12 @@ class TileSums {
 
 
  private:
-  Program program_, guide_program_;
-  Texture out_[2], guide_;
-  Framebuffer fbo_, guide_fbo_;
+  // The firefly test's passes (core/metrics.h, error_guide and error_scale): the guide and
+  // the fireflies' scales at a texel per 2x2 pixels, the depth marking the texels with one.
+  void fireflies(const Texture& radiance, int width, int height);
+  Program program_, guide_program_, scale_program_;
+  Texture out_[2], guide_, scale_[3], depth_;
+  Framebuffer fbo_, guide_fbo_, scale_fbo_;
 };
 
 }  // namespace pt
