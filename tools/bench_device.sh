@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|fragment|denoise|denoiseeval|calibration
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|adaptivebound|fragment|denoise|denoiseeval|calibration
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive, fragment, denoise, denoiseeval or calibration}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive, adaptivebound, fragment, denoise, denoiseeval or calibration}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -159,6 +159,16 @@ case "$part" in
         $v bench "$s" --size $S --kernel compute --seconds "${ADAPTIVE_SECONDS:-10}" --adaptive on \
           --reference "$w/$(basename "$s" .xml)-$S-ref.pfm" --csv "$w/$(basename "$v")-$(basename "$s" .xml).csv" | grep -E "adaptive|spp/s"
       done
+    done
+    ;;
+  adaptivebound)
+    # The most adaptive sampling can gain per scene at equal samples (tools/adaptive_bound.py):
+    # a uniform render of ADAPTIVE_BOUND_SPP (1024) at 1080p (compute kernel) with each
+    # pixel's variance, then the ceilings per pixel, per 16x16 tile and with the floor.
+    for s in ${ADAPTIVE_SCENES:-scenes/cornell-box.xml scenes/reference/scene0.xml scenes/seed/05-cornell-blue-yellow.xml scenes/mesh-cube.xml}; do
+      n=$(basename "$s" .xml)
+      $B render "$s" --size $S --kernel compute --spp "${ADAPTIVE_BOUND_SPP:-1024}" --out "$w/$n-mean.pfm" --out-variance "$w/$n-var.pfm" | grep -E "rendered"
+      python3 tools/adaptive_bound.py --mean "$w/$n-mean.pfm" --variance "$w/$n-var.pfm" --spp "${ADAPTIVE_BOUND_SPP:-1024}"
     done
     ;;
   fragment)
