@@ -11,6 +11,8 @@ uniform highp sampler2D u_radiance;  // the mean RGB
 uniform ivec2 u_size;
 layout(location = 0) out vec4 o_guide;
 
+#include "firefly_mark.glsl"
+
 float lum_at(ivec2 p) { return dot(texelFetch(u_radiance, clamp(p, ivec2(0), u_size - 1), 0).rgb, vec3(0.2126, 0.7152, 0.0722)); }
 
 // Sorts a pair: a the smaller.
@@ -39,7 +41,7 @@ float guide_of(float L[16], ivec2 c, ivec2 p) {
   SORT2(l3, l6) SORT2(l1, l4) SORT2(l2, l5) SORT2(l4, l7) SORT2(l4, l2) SORT2(l6, l4)
   SORT2(l4, l2)
   bool firefly = l > FIREFLY_RATIO * l4 && l >= FIREFLY_NEIGHBOUR * most;
-  return firefly ? uintBitsToFloat(floatBitsToUint(l4) | 0x80000000u) : l4;
+  return firefly ? mark_firefly(l4) : l4;
 }
 
 void main() {
@@ -51,5 +53,5 @@ void main() {
                  guide_of(L, ivec2(1, 2), base + ivec2(0, 1)), guide_of(L, ivec2(2, 2), base + ivec2(1, 1)));
   // Depth 0 where the texel holds a firefly: error_scale.glsl runs there only (early depth
   // test), 1 elsewhere.
-  gl_FragDepth = any(greaterThanEqual(floatBitsToUint(o_guide), uvec4(0x80000000u))) ? 0.0 : 1.0;
+  gl_FragDepth = any(fireflies(o_guide)) ? 0.0 : 1.0;
 }

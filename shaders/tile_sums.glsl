@@ -21,6 +21,8 @@ uniform ivec2 u_size;  // the image's pixels
 layout(location = 0) out vec4 o_sums0;  // var, diff[0], diff[1], diff[2]
 layout(location = 1) out vec4 o_sums1;  // diff[3], pixels, 0, 0
 
+#include "firefly_mark.glsl"
+
 // Pixel p's terms; its error scale (core/metrics.h's error_scale) the mean m, or for a
 // firefly `scale`.
 void add_pixel(ivec2 p, bool firefly, vec3 scale, inout vec4 r0, inout float r1) {
@@ -52,8 +54,7 @@ void main() {
     float r1 = 0.0;
     for (int x = lo.x & ~1; x < hi.x; x += 2) {
       ivec2 t = ivec2(x, y) >> 1;
-      vec4 g = texelFetch(u_guide, t, 0);
-      bvec4 fly = greaterThanEqual(floatBitsToUint(g), uvec4(0x80000000u));
+      bvec4 fly = fireflies(texelFetch(u_guide, t, 0));
       vec4 r = vec4(0.0), gg = vec4(0.0), b = vec4(0.0);
       if (any(fly)) r = texelFetch(u_scale_r, t, 0), gg = texelFetch(u_scale_g, t, 0), b = texelFetch(u_scale_b, t, 0);
       bvec4 in_ = bvec4(x >= lo.x && y >= lo.y, x + 1 < hi.x && y >= lo.y, x >= lo.x && y + 1 < hi.y, x + 1 < hi.x && y + 1 < hi.y);
