@@ -155,6 +155,9 @@ void App::apply_scene(ScenePipeline& pipe, const std::optional<Camera>& camera) 
   pipe.finish(&next);  // throws before changing anything if the program does not build
   shown_ = true;
   env_panel_.scene_loaded(scene.environment);
+  // A new scene's view does not inherit the last view's motion: rendered at the motion
+  // size until kSettleMs after the last key, it would restart at full size a moment later.
+  if (!camera) moving_until_ms_ = -1.0;
   if (camera) {
     renderer_->set_camera(*camera);
   } else if (loads_ == 0 && (options_.camera_position || options_.camera_yaw_pitch)) {

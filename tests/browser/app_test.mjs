@@ -140,11 +140,24 @@ async function devChecks(context, url, dir) {
     dt.items.add(new File([obj], "quad.obj"));
     document.getElementById("canvas").dispatchEvent(new DragEvent("drop", { dataTransfer: dt, bubbles: true, cancelable: true }));
   }, { xml: liveScene("0 1 0"), obj: quad(1) });
-  await until(page, () => window.ptStats().scene.startsWith("/drop/") && window.ptStats().samples >= 2, null, 30000).catch(() => {});
+  const dropped0 = Date.now();
+  // Its first samples, read in the same call as its size: the new scene starts at full
+  // size, not at the motion size of the last view's key hold above (which a restart
+  // would then throw away).
+  const first = await until(page, () => {
+    const f = window.ptStats();
+    return f.scene.startsWith("/drop/") && f.samples >= 1 && { samples: f.samples, size: [f.width, f.height] };
+  }, null, 30000).then((h) => h.jsonValue(), () => null);
+  const waited = await until(page, () => window.ptStats().scene.startsWith("/drop/") && window.ptStats().samples >= 2, null, 30000)
+    .then(() => "", () => "timed out; ");
   s = await stats(page);
+  check("a dropped scene renders at once at its size, not at the last view's motion size",
+        first !== null && first.size[0] === s.width && first.size[1] === s.height && s.width === 96,
+        `first samples ${JSON.stringify(first)}, then ${s.width}x${s.height}`);
   await shot(page, "dropped");
   check("a dropped scene with its mesh loads", s.scene === "/drop/1/dropped.xml" && !s.error && s.mean[1] > 2 * s.mean[0] &&
-        s.files.includes("/drop/1/quad.obj"), JSON.stringify({ scene: s.scene, error: s.error, mean: s.mean }));
+        s.files.includes("/drop/1/quad.obj"), `${waited}after ${Date.now() - dropped0} ms: ` +
+        JSON.stringify({ scene: s.scene, error: s.error, mean: s.mean, samples: s.samples, loads: s.loads, size: [s.width, s.height] }));
 
   // The file picker: the same through <input type=file>.
   await page.setInputFiles("#picker", [{ name: "picked.xml", mimeType: "application/xml", buffer: Buffer.from(liveScene("0 0 1")) },
