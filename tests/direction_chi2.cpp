@@ -7,13 +7,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include "stats.h"
 
 namespace pt {
 namespace {
 
 constexpr int kSamples = 1000000;
 constexpr int kCosBins = 40, kPhiBins = 80, kSub = 5;
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 

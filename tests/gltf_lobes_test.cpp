@@ -22,6 +22,7 @@
 #include "scene/xml_loader.h"
 #include "render/renderer.h"
 #include "test_paths.h"
+#include "stats.h"
 
 using namespace pt;
 
@@ -84,8 +85,8 @@ std::vector<LobeCase> lobe_cases() {
   };
 }
 
-constexpr double kCos[] = {0.8, 0.2, 0.02};
-const double kAlpha = sidak_alpha(0.01, 9 * 3);
+constexpr double kLobesCos[] = {0.8, 0.2, 0.02};
+const double kLobesAlpha = sidak_alpha(0.01, 9 * 3);
 
 // The mean sampled weight (rgb) and its standard error (max over channels) at incidence cos_o.
 struct Albedo {
@@ -108,25 +109,24 @@ Albedo albedo(const std::string& material, double cos_o, int n = 200000) {
   return {mean, std::sqrt(std::max({var.x, var.y, var.z}))};
 }
 
-double schlick(double f0, double c) { return f0 + (1 - f0) * std::pow(1 - c, 5); }
 
 }  // namespace
 
 TEST_CASE("glTF lobes: chi-square of the sampler with each extension lobe, grazing incidence too", "[gpu][sampling][gltf]") {
   test_gl();
   for (const LobeCase& c : lobe_cases())
-    for (double cos_o : kCos) {
+    for (double cos_o : kLobesCos) {
       DirectionCase dc{material_glsl(c.mr, c.nc, c.transmission) + incident(cos_o) + kBsdfPdfHelper, kBsdfSample, kBsdfDensity};
       dc.features = lobe_features();
       const std::string name = std::string("gltf ") + c.name + " cos_o=" + std::to_string(cos_o).substr(0, 4);
-      CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+      CHECK(direction_chi2(dc, name.c_str()).p_value >= kLobesAlpha);
     }
 }
 
 TEST_CASE("glTF lobes: sampled weights equal f cos / pdf of the evaluated BSDF", "[gpu][sampling][gltf]") {
   test_gl();
   for (const LobeCase& c : lobe_cases()) {
-    const std::vector<double> cosines(std::begin(kCos), std::end(kCos));
+    const std::vector<double> cosines(std::begin(kLobesCos), std::end(kLobesCos));
     const std::vector<float> worst = sampled_weight_errors(material_glsl(c.mr, c.nc, c.transmission), lobe_features(), cosines);
     for (size_t i = 0; i < cosines.size(); ++i) {
       INFO(c.name << " cos_o " << cosines[i]);

@@ -14,6 +14,7 @@
 #include "scene/xml_loader.h"
 #include "media_scenes.h"
 #include "test_paths.h"
+#include "stats.h"
 
 using namespace pt;
 
@@ -38,7 +39,6 @@ double at(const RenderResult& r, double x, double y) {
   return region_mean(r, px - 1, py - 1, px + 1, py + 1).mean;
 }
 
-double schlick(double f0, double c) { return f0 + (1 - f0) * std::pow(1 - c, 5); }
 
 }  // namespace
 

@@ -62,8 +62,8 @@ std::vector<VolumeCase> volume_cases() {
   };
 }
 
-constexpr double kCos[] = {0.9, 0.4, 0.05};
-const double kAlpha = sidak_alpha(0.01, 3 * 2 * 3);  // cases x sides x incidences
+constexpr double kVolumeCos[] = {0.9, 0.4, 0.05};
+const double kVolumeAlpha = sidak_alpha(0.01, 3 * 2 * 3);  // cases x sides x incidences
 
 // A GltfPbr volume as the glTF loader makes it: white, dielectric, double-sided.
 Material gltf_volume(float roughness, float transmission, glm::vec3 sigma = glm::vec3(0.0f)) {
@@ -96,7 +96,7 @@ TEST_CASE("glTF volume: chi-square of the sampler from outside and inside (total
   test_gl();
   for (const VolumeCase& c : volume_cases())
     for (bool entering : {true, false})
-      for (double cos_o : kCos) {
+      for (double cos_o : kVolumeCos) {
         const std::string side = entering ? "true" : "false";
         DirectionCase dc{volume_glsl(c.mr, c.transmission, 1.5f) + incident(cos_o) +
                              "float eval_pdf(vec3 d) { float pdf; material_eval(make_material(), WO, d, " + side + ", pdf); return pdf; }\n",
@@ -106,7 +106,7 @@ TEST_CASE("glTF volume: chi-square of the sampler from outside and inside (total
         dc.features = volume_features();
         char name[128];
         std::snprintf(name, sizeof name, "gltf volume: %s, %s, cos_o %.2f", c.name, entering ? "outside" : "inside", cos_o);
-        CHECK(direction_chi2(dc, name).p_value >= kAlpha);
+        CHECK(direction_chi2(dc, name).p_value >= kVolumeAlpha);
       }
 }
 
@@ -114,7 +114,7 @@ TEST_CASE("glTF volume: sampled weights equal f cos / pdf of the evaluated BSDF 
   test_gl();
   for (const VolumeCase& c : volume_cases())
     for (bool entering : {true, false}) {
-      const std::vector<double> cosines(std::begin(kCos), std::end(kCos));
+      const std::vector<double> cosines(std::begin(kVolumeCos), std::end(kVolumeCos));
       const std::vector<float> worst = sampled_weight_errors(volume_glsl(c.mr, c.transmission, 1.5f), volume_features(), cosines, entering);
       for (size_t i = 0; i < cosines.size(); ++i) {
         INFO(c.name << (entering ? " outside" : " inside") << " cos_o " << cosines[i]);

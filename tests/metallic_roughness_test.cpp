@@ -13,12 +13,12 @@
 #include "gl_context.h"
 #include "glsl_harness.h"
 #include "scene_builders.h"
+#include "stats.h"
 
 using namespace pt;
 
 namespace {
 
-double schlick(double f0, double c) { return f0 + (1 - f0) * std::pow(1 - c, 5); }
 
 // The mean sampled weight (red channel) of material m at incidence cos_o, over n samples.
 Estimate mean_weight(const Material& m, double cos_o, int n = 200000) {

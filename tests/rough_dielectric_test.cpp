@@ -21,7 +21,7 @@ using namespace pt;
 namespace {
 
 constexpr int kChi2Cases = 2 * 2 * 3;  // sides x roughnesses x incidences below
-const double kAlpha = sidak_alpha(0.01, kChi2Cases);
+const double kRoughAlpha = sidak_alpha(0.01, kChi2Cases);
 
 Material rough(float roughness, glm::vec3 sigma = glm::vec3(0.0f)) {
   return RoughDielectric{.ior = 1.5f, .roughness = roughness, .sigma = sigma};
@@ -43,7 +43,7 @@ TEST_CASE("RoughDielectric: chi-square of its sampler from outside and inside (t
                          "eval_pdf(d)"};
         char name[96];
         std::snprintf(name, sizeof name, "RoughDielectric %s roughness %.2f cos_o %.2f", entering ? "outside" : "inside", double(r), c);
-        CHECK(direction_chi2(dc, name).p_value >= kAlpha);
+        CHECK(direction_chi2(dc, name).p_value >= kRoughAlpha);
       }
 }
 

@@ -34,7 +34,7 @@ Material metal(float glossiness, float sampling) {
   return Metal{.iorComplex = glm::vec2(0.2f, 3.0f), .glossiness = glossiness, .montecarlo = sampling};
 }
 
-const double kAlpha = sidak_alpha(0.01, kChi2Tests);
+const double kSamplingAlpha = sidak_alpha(0.01, kChi2Tests);
 
 }  // namespace
 
@@ -43,7 +43,7 @@ TEST_CASE("chi-square: diffuse, cosine-weighted and uniform", "[gpu][sampling]")
     for (double c : {1.0, 0.5, 1e-3}) {
       DirectionCase dc{glsl_material(Diffuse{}) + incident(c) + kBsdfPdfHelper, kBsdfSample, kBsdfDensity, dot};
       const std::string name = std::string("diffuse ") + (dot ? "cosine" : "uniform") + " cos_o=" + std::to_string(c);
-      CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+      CHECK(direction_chi2(dc, name.c_str()).p_value >= kSamplingAlpha);
     }
 }
 
@@ -58,7 +58,7 @@ TEST_CASE("chi-square: GGX metal, visible-normal and cosine sampling", "[gpu][sa
                      kBsdfDensity};
     const std::string name = "metal g=" + std::to_string(c.glossiness).substr(0, 3) + (c.sampling > 0 ? " vndf" : " cosine") +
                              " cos_o=" + std::to_string(c.cos_o);
-    CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+    CHECK(direction_chi2(dc, name.c_str()).p_value >= kSamplingAlpha);
   }
 }
 
@@ -67,7 +67,7 @@ TEST_CASE("chi-square: Phong specular lobe", "[gpu][sampling]") {
     for (double c : {0.9, 0.2}) {
       DirectionCase dc{glsl_material(PhongSpecular{.n = n}) + incident(c) + kBsdfPdfHelper, kBsdfSample, kBsdfDensity};
       const std::string name = "phong n=" + std::to_string(int(n)) + " cos_o=" + std::to_string(c);
-      CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+      CHECK(direction_chi2(dc, name.c_str()).p_value >= kSamplingAlpha);
     }
 }
 
@@ -88,7 +88,7 @@ TEST_CASE("chi-square: Textured, a Lambert and Phong mixture", "[gpu][sampling][
                      kBsdfSample, kBsdfDensity};
     const std::string name = "textured d=" + std::to_string(c.diffuse).substr(0, 3) + " s=" + std::to_string(c.specular).substr(0, 3) +
                              " cos_o=" + std::to_string(c.cos_o);
-    CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+    CHECK(direction_chi2(dc, name.c_str()).p_value >= kSamplingAlpha);
   }
 }
 
@@ -110,7 +110,7 @@ TEST_CASE("chi-square: every material kind's example that samples a lobe of its 
     for (double c : {0.7, 0.05}) {
       DirectionCase dc{rec + incident(c) + kBsdfPdfHelper, kBsdfSample, kBsdfDensity};
       const std::string name = std::string(kMaterialKinds[k].xml) + " example cos_o=" + std::to_string(c);
-      CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+      CHECK(direction_chi2(dc, name.c_str()).p_value >= kSamplingAlpha);
     }
     ++tested;
   }
@@ -142,7 +142,7 @@ TEST_CASE("chi-square: light sampling of spheres, boxes, disks and triangles", "
     const std::string setup = std::string("const vec3 P = vec3(0.0);\nShapeRec make_light() {\n  ShapeRec s;\n  s.material = 0; s.light = 0;\n  ") +
                               c.shape + "\n  return s;\n}\n" + density_helper;
     DirectionCase dc{setup, sample, "light_density(d)"};
-    CHECK(direction_chi2(dc, c.name).p_value >= kAlpha);
+    CHECK(direction_chi2(dc, c.name).p_value >= kSamplingAlpha);
     covered.insert(std::string(c.shape).substr(std::string(c.shape).find("SHAPE_") + 6, std::string(c.shape).find(';') - std::string(c.shape).find("SHAPE_") - 6));
   }
   // Every light-sampled kind of the list has its case here (a new one cannot be forgotten).
@@ -196,7 +196,7 @@ TEST_CASE("chi-square: environment map importance sampling", "[gpu][sampling]") 
       k.program().set("u_env_integral", d.integral);
     };
     const std::string name = "environment map, rotation " + std::to_string(rotation).substr(0, 3);
-    CHECK(direction_chi2(dc, name.c_str()).p_value >= kAlpha);
+    CHECK(direction_chi2(dc, name.c_str()).p_value >= kSamplingAlpha);
   }
 }
 

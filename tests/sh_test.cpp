@@ -10,12 +10,12 @@
 #include "gl_context.h"
 #include "glsl_harness.h"
 #include "render/sh.h"
+#include "stats.h"
 
 using namespace pt;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 std::shared_ptr<EnvImage> blank_map(int w, int h, float value = 0.0f) {
   auto m = std::make_shared<EnvImage>();

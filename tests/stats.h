@@ -1,6 +1,7 @@
 // Statistics for the tests: Pearson's chi-square goodness of fit (Mitsuba's and pbrt's
 // method for validating samplers) and the chi-square survival function.
 #pragma once
+#include <cmath>
 #include <vector>
 
 namespace pt {
@@ -23,5 +24,10 @@ Chi2Result chi2_test(const std::vector<double>& observed, const std::vector<doub
 
 // Per-test significance for `tests` tests at overall level alpha (Sidak correction).
 double sidak_alpha(double alpha, int tests);
+
+// Closed forms the tests compare against, written once for every test file.
+inline constexpr double kPi = 3.14159265358979323846;
+// Schlick's Fresnel approximation: reflectance f0 at normal incidence, c = cos(theta).
+inline double schlick(double f0, double c) { return f0 + (1 - f0) * std::pow(1 - c, 5); }
 
 }  // namespace pt

@@ -18,12 +18,12 @@
 #include "scene/textured_loader.h"
 #include "scene/xml_loader.h"
 #include "scene_builders.h"
+#include "stats.h"
 
 using namespace pt;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 std::string tmp_dir() {
   const std::string d = std::string(PT_BINARY_DIR) + "/textured-test";
