@@ -152,7 +152,7 @@ case "$part" in
     # adaptive only, against the same references.
     scenes=(${ADAPTIVE_SCENES:-scenes/cornell-box.xml scenes/reference/scene0.xml scenes/seed/05-cornell-blue-yellow.xml scenes/mesh-cube.xml})
     python3 -u tools/adaptive_eval.py --bin "$B" --size $S --kernel compute --seconds "${ADAPTIVE_SECONDS:-10}" \
-      --ref-seconds "${ADAPTIVE_REF_SECONDS:-60}" --spp 0 --repeat 1 --work "$w" --csv "$w/adaptive.csv" "${scenes[@]}"
+      --ref-seconds "${ADAPTIVE_REF_SECONDS:-60}" --spp 0 --repeat "${ADAPTIVE_REPEAT:-1}" --work "$w" --csv "$w/adaptive.csv" "${scenes[@]}"
     for v in ${ADAPTIVE_OTHERS:-}; do
       for s in "${scenes[@]}"; do
         echo "== $(basename "$v") $(basename "$s" .xml) adaptive"

@@ -11,7 +11,11 @@
 // every draw) over --seconds after --warmup, and the UI frame rate over the same window
 // (animation frames; in the raw pass one frame is one draw). Prints each run, the medians
 // and page / raw. Both without the coarse first image (&coarse=0), both unlimited.
-import { mkdtempSync, rmSync } from "node:fs";
+// Over the same window, the CPU time of every thread of the browser's processes (Linux
+// /proc: utime + stime), summed by process type and thread name, in ms per second of wall
+// time: where a frame's time goes (SwiftShader draws on its worker threads in the GPU
+// process; wasm, ImGui and WebGL calls on the renderer's main thread).
+import { mkdtempSync, readdirSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { checkWebBuild, launcher, median, openPage, repo, startServer } from "../tests/browser/app_lib.mjs";
@@ -29,13 +33,48 @@ for (let i = 2; i < process.argv.length; i += 2) {
 const [vw, vh] = opt.viewport.split("x").map(Number);
 const webDir = resolve(repo, opt.web);
 
+// CPU ticks of every thread of every process started with this profile, keyed
+// "process type / thread name" (a thread name's digits dropped: workers of one pool add up).
+function cpuSnapshot(userDir) {
+  const procs = new Map();  // pid -> { parent, cmd }
+  for (const pid of readdirSync("/proc").filter((d) => /^\d+$/.test(d))) {
+    try {
+      const stat = readFileSync(`/proc/${pid}/stat`, "utf8");
+      procs.set(pid, { parent: stat.slice(stat.lastIndexOf(")") + 2).split(" ")[1],
+                       cmd: readFileSync(`/proc/${pid}/cmdline`, "utf8") });
+    } catch { /* ended */ }
+  }
+  const ours = (pid, depth = 0) => {  // started with this profile, or a descendant of such a process
+    const p = procs.get(pid);
+    return !!p && depth < 8 && (p.cmd.includes(userDir) || ours(p.parent, depth + 1));
+  };
+  const ticks = new Map();
+  for (const [pid, { cmd }] of procs) {
+    if (!ours(pid)) continue;
+    const type = (cmd.match(/--type=([a-z-]+)/) || [, "browser"])[1];
+    try {
+      for (const tid of readdirSync(`/proc/${pid}/task`)) {
+        const stat = readFileSync(`/proc/${pid}/task/${tid}/stat`, "utf8");
+        const name = stat.slice(stat.indexOf("(") + 1, stat.lastIndexOf(")")).replace(/[0-9]+/g, "#");
+        const f = stat.slice(stat.lastIndexOf(")") + 2).split(" ");
+        const key = `${type} / ${name}`;
+        ticks.set(key, (ticks.get(key) || 0) + Number(f[11]) + Number(f[12]));  // utime, stime
+      }
+    } catch { /* a process or thread that ended */ }
+  }
+  return ticks;
+}
+const kTicksPerSecond = 100;  // USER_HZ on Linux
+
 // Paths and animation frames over `ms`, after the first full-resolution sample.
+let userDir = "";
 async function measure(context, url, mode) {
   const errors = [];
   const page = await openPage(context, url, errors);
   await page.waitForFunction(() => window.ptLoadStatus().samples >= 1 || window.ptLoadStatus().paths > 0, null,
                              { timeout: 300000, polling: 100 });
   await page.waitForTimeout(Number(opt.warmup) * 1000);
+  const cpu0 = cpuSnapshot(userDir);
   const r = await page.evaluate((ms) => new Promise((done) => {
     const s0 = window.ptLoadStatus(), t0 = performance.now();
     let frames = 0, worst = 0, last = t0;
@@ -50,6 +89,9 @@ async function measure(context, url, mode) {
     };
     requestAnimationFrame(tick);
   }), Number(opt.seconds) * 1000);
+  const cpu1 = cpuSnapshot(userDir);
+  const threads = [...cpu1].map(([k, t]) => [k, ((t - (cpu0.get(k) || 0)) * 1000) / kTicksPerSecond / (r.ms / 1000)])
+    .filter(([, v]) => v >= 5).sort((a, b) => b[1] - a[1]);
   const st = await page.evaluate(() => window.ptStats());
   await page.close();
   const out = { mode, pathsPerSecond: (r.paths * 1000) / r.ms, fps: (r.frames * 1000) / r.ms, worst: r.worst,
@@ -57,12 +99,14 @@ async function measure(context, url, mode) {
   console.log(`# ${mode}: ${out.pathsPerSecond.toFixed(0)} paths/s, ${out.fps.toFixed(1)} UI frames/s (worst frame ${out.worst.toFixed(0)} ms), ` +
               `draws of ${mode === "raw" ? opt["raw-rows"] + " rows" : out.draw}, ${out.width}x${out.height}, ${out.samples} spp at the end` +
               (errors.length ? `; errors: ${errors.join(" | ")}` : ""));
+  console.log(`#   CPU ms per s: total ${threads.reduce((a, [, v]) => a + v, 0).toFixed(0)}; ` +
+              threads.map(([k, v]) => `${k} ${v.toFixed(0)}`).join(", "));
   return out;
 }
 
 async function main() {
   checkWebBuild(webDir);
-  const userDir = mkdtempSync(join(tmpdir(), "pt-chromium-"));
+  userDir = mkdtempSync(join(tmpdir(), "pt-chromium-"));
   const server = await startServer([webDir, "0"]);
   const runs = { page: [], raw: [] };
   try {
