@@ -6,6 +6,7 @@
 //
 //   NODE_PATH=/usr/share/nodejs node tools/page_cost.mjs [--web build/web] [--scene reference/scene2.xml]
 //        [--viewport 960x640] [--bounces 8] [--raw-rows 32] [--cycles 2] [--warmup 8] [--seconds 30]
+//        [--denoise on|off]   (off: the denoiser toggled off in both, as the panel's checkbox does)
 //
 // Per run: paths/s from the page's own count (ptLoadStatus().paths, every pixel sample of
 // every draw) over --seconds after --warmup, and the UI frame rate over the same window
@@ -21,7 +22,7 @@ import { join, resolve } from "node:path";
 import { checkWebBuild, launcher, median, openPage, repo, startServer } from "../tests/browser/app_lib.mjs";
 
 const opt = { web: "build/web", scene: "reference/scene2.xml", viewport: "960x640", bounces: "8", "raw-rows": "32",
-              cycles: "2", warmup: "8", seconds: "30" };
+              cycles: "2", warmup: "8", seconds: "30", denoise: "on" };
 for (let i = 2; i < process.argv.length; i += 2) {
   const key = process.argv[i].replace(/^--/, "");
   if (!(key in opt) || i + 1 >= process.argv.length) {
@@ -73,6 +74,7 @@ async function measure(context, url, mode) {
   const page = await openPage(context, url, errors);
   await page.waitForFunction(() => window.ptLoadStatus().samples >= 1 || window.ptLoadStatus().paths > 0, null,
                              { timeout: 300000, polling: 100 });
+  if (opt.denoise === "off") await page.evaluate(() => window.ptSetDenoise(false));
   await page.waitForTimeout(Number(opt.warmup) * 1000);
   const cpu0 = cpuSnapshot(userDir);
   const r = await page.evaluate((ms) => new Promise((done) => {
