@@ -109,7 +109,6 @@ Albedo albedo(const std::string& material, double cos_o, int n = 200000) {
   return {mean, std::sqrt(std::max({var.x, var.y, var.z}))};
 }
 
-
 }  // namespace
 
 TEST_CASE("glTF lobes: chi-square of the sampler with each extension lobe, grazing incidence too", "[gpu][sampling][gltf]") {

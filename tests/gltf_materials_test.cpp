@@ -39,7 +39,6 @@ double at(const RenderResult& r, double x, double y) {
   return region_mean(r, px - 1, py - 1, px + 1, py + 1).mean;
 }
 
-
 }  // namespace
 
 TEST_CASE("glTF: a metallic-roughness checker gives the metal/dielectric split per texel", "[gpu][gltf]") {

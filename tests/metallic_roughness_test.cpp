@@ -19,7 +19,6 @@ using namespace pt;
 
 namespace {
 
-
 // The mean sampled weight (red channel) of material m at incidence cos_o, over n samples.
 Estimate mean_weight(const Material& m, double cos_o, int n = 200000) {
   char wo[128];

@@ -16,7 +16,6 @@ using namespace pt;
 
 namespace {
 
-
 std::shared_ptr<EnvImage> blank_map(int w, int h, float value = 0.0f) {
   auto m = std::make_shared<EnvImage>();
   m->width = w;

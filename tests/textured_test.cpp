@@ -24,7 +24,6 @@ using namespace pt;
 
 namespace {
 
-
 std::string tmp_dir() {
   const std::string d = std::string(PT_BINARY_DIR) + "/textured-test";
   std::filesystem::create_directories(d);

@@ -67,8 +67,9 @@ function cpuSnapshot(userDir) {
 }
 const kTicksPerSecond = 100;  // USER_HZ on Linux
 
+let userDir = "";  // the browser profile of this run (main): its processes are the ones counted
+
 // Paths and animation frames over `ms`, after the first full-resolution sample.
-let userDir = "";
 async function measure(context, url, mode) {
   const errors = [];
   const page = await openPage(context, url, errors);
