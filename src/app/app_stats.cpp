@@ -183,6 +183,7 @@ std::string App::stats_json() const {
   j += ",\"view\":" + json_string(view_query());
   j += ",\"samplesPerSecond\":" + json_number(samples_per_second_);
   j += ",\"passesPerFrame\":" + std::to_string(pacer_.passes_per_frame());
+  j += ",\"slowFrameMs\":" + json_number(FramePacer::kSlowDrawFrameMs);
   j += ",\"bandRows\":" + std::to_string(settings_.band_rows);
   j += ",\"bandColumns\":" + std::to_string(settings_.band_columns);
   j += ",\"width\":" + std::to_string(renderer_->width());

@@ -72,6 +72,9 @@ class FramePacer {
   int frame(Renderer& r, RenderSettings& s, double dt_ms, double now_ms, bool busy, double& samples);
   int passes_per_frame() const { return passes_per_frame_; }
   static constexpr int kJudgeFrames = 6;  // frame intervals averaged per judgement of the draw size (pacing.cpp)
+  // A mean frame slower than this shrinks the draw (pacing.cpp): just under 30 frames/s,
+  // and above two 60 Hz intervals. The page reports it (ptStats().slowFrameMs).
+  static constexpr double kSlowDrawFrameMs = 33.5;
 
  private:
   int min_band_columns(int w, int h) const;
