@@ -106,6 +106,20 @@ TEST_CASE("error estimate: within 25% of the true relMSE from 16 spp on (closed 
   check_calibration(scene, 32, 32, st, std::vector<float>(4, 2.0f), {16, 32, 64, 128}, 0.25);
 }
 
+TEST_CASE("error estimate: the decay's exponent at n leaves out D(n/2, n), the term it scales", "[error]") {
+  // D falls exactly as n^-1.2 from 16 to 256 spp; at 512 spp the image's D came out low
+  // by chance (half the law's). The estimate at 512 scales that D by 1 / (2^a - 1): a must
+  // be the earlier points' 1.2, not a line pulled steeper by the low D itself (which would
+  // lower the estimate twice).
+  ErrorHistory h;
+  for (int n = 16; n <= 256; n *= 2) h.record(n, std::pow(double(n), -1.2));
+  h.record(512, 0.5 * std::pow(512.0, -1.2));
+  CHECK(h.exponent(512) == Approx(1.2).margin(1e-9));
+  CHECK(h.exponent(600) > 1.25);  // between powers of two the point of 512 is an earlier one
+  CHECK(h.exponent(300) == Approx(1.2).margin(1e-9));
+  CHECK(h.exponent(32) == 1.0);  // one point before 32: no line yet
+}
+
 TEST_CASE("error estimate: tiles and the image agree, and there is no estimate below 2 spp", "[error]") {
   // 40x36 pixels in 32-pixel tiles: 2x2 tiles, the last row and column cut short.
   const int w = 40, h = 36;

@@ -31,8 +31,11 @@ void ErrorHistory::record(int samples, double diff_mean) {
   points_.push_back({x, std::log(diff_mean)});
 }
 
-double ErrorHistory::exponent() const {
-  const size_t n = points_.size(), first = n > 5 ? n - 5 : 0;
+double ErrorHistory::exponent(int before) const {
+  const double limit = std::log(double(before));
+  size_t n = points_.size();
+  while (n > 0 && !(points_[n - 1].first < limit)) --n;
+  const size_t first = n > 5 ? n - 5 : 0;
   if (n - first < 2) return 1.0;
   double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
   for (size_t i = first; i < n; ++i, ++m) {

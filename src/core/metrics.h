@@ -2,6 +2,7 @@
 // render's own samples (no reference), over RGB of RGBA pixels.
 #pragma once
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace pt {
@@ -38,7 +39,7 @@ ErrorMetrics image_error(const std::vector<float>& image, const std::vector<floa
 // so with T(n) = c n^-a, T(n) = D(k, n) / ((n/k)^a - 1), D the sum of (m_n - m_k)^2 / (m^2 +
 // 0.01) over a region. The exponent a comes from the image's D(n/2, n) at the powers of
 // two n >= ErrorHistory::kFirstPoint (16) so far (D falls as n^-a: a least-squares line
-// through the last five in log-log; 1 before there are two), and the same a serves every
+// through the last five below n in log-log; 1 before there are two), and the same a serves every
 // tile. Points from n = 4 and 8 were dropped: there D is the first few samples' structure
 // and a handful of fireflies, not yet the power law (scene0 at 16 spp: a fitted 1.49 from
 // n = 4, 8, 16 and the estimate 0.48 of the truth; from 16 on, 0.87). The estimate of a
@@ -97,7 +98,12 @@ class ErrorHistory {
   void clear() { points_.clear(); }
   static constexpr int kFirstPoint = 16;
   void record(int samples, double diff_mean);  // ignored below kFirstPoint samples, or if not above the last
-  double exponent() const;                      // clamped to [0.5, 3]
+  // From the points recorded below `before` samples, clamped to [0.5, 3]. An estimate at n
+  // samples scales D(n/2, n) by it, so it leaves out the point of n itself: that point is
+  // the same D, and with it in, a D that came out low by chance also steepened the fitted
+  // decay, which lowered the scale again (scene0 at 512x512 and 512 spp on the H100: 0.72
+  // of the truth with it in; docs/benchmarks.md).
+  double exponent(int before = std::numeric_limits<int>::max()) const;
  private:
   std::vector<std::pair<double, double>> points_;  // log n, log D
 };

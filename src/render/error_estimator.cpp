@@ -50,7 +50,7 @@ std::vector<ErrorSums> ErrorEstimator::sums(const Accumulator& a, const Snapshot
     // before it, at half that or less, for the exponent (core/metrics.h).
     const BlockGrid g = a.block_sums(images, std::gcd(std::gcd(kTile, c->tile()), kSumsBlock));
     const PixelCounts now{c->tile(), c->tiles_x(), &c->counts()};
-    const double decay = snapshot_exponent(g, counts, now, history_.exponent());
+    const double decay = snapshot_exponent(g, counts, now, history_.exponent(a.samples()));
     if (exponent) *exponent = decay;
     return error_tiles(g, counts, now, decay, kTile);
   }
@@ -94,11 +94,11 @@ ErrorEstimate ErrorEstimator::estimate(const Accumulator& a) const {
   const Snapshot* s = current ? usable(a.samples()) : nullptr;
   const int tx = (a.width() + kTile - 1) / kTile, ty = (a.height() + kTile - 1) / kTile;
   if (a.tile_counts() && current) {  // the snapshots' terms scaled per pixel (or iid's where none fits)
-    double exponent = history_.exponent();
+    double exponent = history_.exponent(a.samples());
     const std::vector<ErrorSums> t = sums(a, s, &exponent);
     return combine_error_scaled(t, tx, ty, kTile, a.samples(), true, exponent);
   }
-  return combine_error(sums(a, s), tx, ty, kTile, a.samples(), s ? s->samples : 0, current ? history_.exponent() : 1.0);
+  return combine_error(sums(a, s), tx, ty, kTile, a.samples(), s ? s->samples : 0, current ? history_.exponent(a.samples()) : 1.0);
 }
 
 }  // namespace pt
