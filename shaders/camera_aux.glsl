@@ -11,18 +11,27 @@
 //     scene: the chain's throughput (1 seen directly);
 //   - normal: that hit's shading normal on the ray's side; 0 for a ray that leaves;
 //   - depth: the path's length to that hit, times the cosine of the camera ray to the view
-//     axis (the view depth for a direct hit); kAuxFar for a ray that leaves.
+//     axis (the view depth for a direct hit); kAuxFar for a ray that leaves;
+//   - seen: 1 where the camera ray's own hit absorbs (an Emit+Absorb light seen directly),
+//     else 0; its mean over the samples is the part of the pixel that shows a light
+//     itself. The denoiser leaves such pixels raw and keeps them out of the others' taps:
+//     a light is not albedo x irradiance, and its rim mixes it with what is around it.
+//     Not through a delta chain: there glass picks reflection or refraction per sample, so
+//     such pixels are fireflies that the filter should still spread (the glTF scene's
+//     tori: marked, its error rose 10% at 64 spp, docs/denoise.md).
 #ifdef PT_AUX
 const float kAuxFar = 1.0e5;
 vec3 g_aux_albedo;
 vec3 g_aux_normal;
 float g_aux_length;
+float g_aux_seen;
 bool g_aux_done;
 
 void aux_start() {
   g_aux_albedo = vec3(1.0);
   g_aux_normal = vec3(0.0);
   g_aux_length = 0.0;
+  g_aux_seen = 0.0;
   g_aux_done = false;
 }
 // At each hit, before the material is resolved: t the hit's distance along the ray.
@@ -32,6 +41,7 @@ void aux_surface(Surface sf, vec3 beta, float t) {
   g_aux_normal = sf.n;
   if (sf.absorbs) {
     g_aux_albedo = beta;
+    g_aux_seen = g_aux_length == t ? 1.0 : 0.0;  // the camera ray's own hit (the length starts at 0)
     g_aux_done = true;
   }
 }

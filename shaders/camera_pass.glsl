@@ -39,7 +39,7 @@ uniform vec3 u_env_color;
 // pass writes colour targets; the compute kernel (PT_COMPUTE: native GL ES 3.1+) the same
 // textures as images, over 8x8-pixel groups covering the tile [u_origin, u_end) (columns
 // x, rows y). With PT_AUX, two more: aux0 = (albedo RGB, view depth), aux1 = (shading
-// normal, 0), running means over the samples like the radiance (camera_aux.glsl).
+// normal, the part that sees a light itself), running means over the samples like the radiance (camera_aux.glsl).
 #ifdef PT_COMPUTE
 layout(rgba32f, binding = 0) writeonly uniform highp image2D o_accum_image;
 layout(rgba32f, binding = 1) writeonly uniform highp image2D o_stats_image;
@@ -127,7 +127,7 @@ void render_pixel(ivec2 px, out vec4 accum, out vec4 stats) {
     vec3 c = trace_path(Ray(o, d));
 #ifdef PT_AUX
     aux0 += vec4(g_aux_albedo, g_aux_length * dot(d, u_cam_fwd));
-    aux1.xyz += g_aux_normal;
+    aux1 += vec4(g_aux_normal, g_aux_seen);
 #endif
     if (non_finite(c)) {
       bad += 1.0;

@@ -73,21 +73,29 @@ struct Guide {
   vec3 n;      // unit normal (when valid)
   vec3 a;      // first-hit albedo (an emitter's: 1)
   bool valid;  // a surface: the ray did not leave the scene
+  bool light;  // some of its samples see a light itself (camera_aux.glsl): left raw
 };
+// A pixel some of whose samples see a light itself (an Emit+Absorb hit): the light is not
+// albedo x irradiance, and at its rim it is mixed with what lies around it, so such pixels
+// are neither filtered (the finish gives them the raw mean) nor taps of the others.
+bool sees_light(vec4 aux1) { return aux1.w > 0.0; }
 Guide guide(ivec2 p) {
-  vec3 n = texelFetch(u_aux1, p, 0).xyz;
+  vec4 a1 = texelFetch(u_aux1, p, 0);
+  vec3 n = a1.xyz;
   bool valid = dot(n, n) > 0.25;  // else the ray left the scene (or an edge of one)
-  return Guide(depth(p), depth_gradient(p), valid ? normalize(n) : n, texelFetch(u_aux0, p, 0).rgb, valid);
+  return Guide(depth(p), depth_gradient(p), valid ? normalize(n) : n, texelFetch(u_aux0, p, 0).rgb, valid, sees_light(a1));
 }
 
-// SVGF's geometric edge-stopping weight of tap q for pixel p (0 across a sky edge), times
+// SVGF's geometric edge-stopping weight of tap q for pixel p (0 across a sky edge, and
+// between a pixel that sees a light and one that does not), times
 // an albedo term: exp(-(d / sigma_a)^2) with d the largest channel's difference relative to
 // the pair's mean, so that a light's rim does not mix the emitter with the ceiling around
 // it (they share a plane and a normal; the albedo of an emitter seen directly is 1).
 float geometry_weight(Guide g, ivec2 p, ivec2 q) {
-  vec3 nq = texelFetch(u_aux1, q, 0).xyz;
+  vec4 a1q = texelFetch(u_aux1, q, 0);
+  vec3 nq = a1q.xyz;
   bool valid_q = dot(nq, nq) > 0.25;
-  if (valid_q != g.valid) return 0.0;
+  if (valid_q != g.valid || sees_light(a1q) != g.light) return 0.0;
   float wn = g.valid ? pow(max(dot(g.n, normalize(nq)), 0.0), u_sigma_n) : 1.0;
   vec4 aq = texelFetch(u_aux0, q, 0);
   vec3 da = abs(g.a - aq.rgb) / (0.5 * (g.a + aq.rgb) + 0.02);
@@ -202,6 +210,7 @@ void main() {
 #else
   vec3 raw = texelFetch(u_radiance, p, 0).rgb;
   vec3 filtered = texelFetch(u_input, p, 0).rgb;
+  if (sees_light(texelFetch(u_aux1, p, 0))) filtered = demodulated(p);  // a light's pixels stay raw
   o_color = vec4(raw + u_weight * safe_albedo(p) * (filtered - demodulated(p)), 1.0);
 #endif
 }

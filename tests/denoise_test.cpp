@@ -163,6 +163,51 @@ TEST_CASE("denoiser: no blur across an albedo edge on one plane (a light's rim)"
   CHECK(column_mean(s, b, 31) - column_mean(s, b, 32) < 0.08);
 }
 
+TEST_CASE("denoiser: a light seen directly and its rim stay raw and do not bleed into the plane around them", "[gpu][denoise]") {
+  test_gl();
+  // A ceiling (albedo 0.73, radiance 0.3, noisy) with a light in it (radiance 17, albedo 1
+  // by the auxiliaries' convention) on the same plane and normal, and a rim column whose
+  // pixels are 10% to 90% light (an edge at a slant; the auxiliaries' light part). A rim
+  // pixel's albedo lies between the two, and its demodulated value is not linear in it.
+  auto make = [](int samples, bool marked) {
+    Synthetic s(64, 32);
+    s.samples = samples;
+    std::mt19937 rng(3);
+    std::normal_distribution<float> noise(0.0f, 0.05f);
+    for (int y = 0; y < s.h; ++y)
+      for (int x = 0; x < s.w; ++x) {
+        const float part = x < 30 ? 0.0f : x == 30 ? 0.1f + 0.8f * float(y * 3 % 8) / 7.0f : 1.0f;  // of the samples on the light
+        const float L = part * 17.0f + (1.0f - part) * (0.3f + noise(rng));
+        s.set(x, y, L, part > 0.0f ? 1.0f : 0.0004f, part + (1.0f - part) * 0.73f, 1.0f);
+        if (marked) s.aux1[(size_t(y) * s.w + x) * 4 + 3] = part;
+      }
+    return s;
+  };
+  for (int n : {1, 64}) {  // below and above the gate (DenoiseParams::min_samples)
+    INFO(n << " spp");
+    const Synthetic s = make(n, true);
+    const std::vector<float> a = s.denoise();
+    for (int x = 30; x < 64; ++x)
+      for (int y = 0; y < s.h; ++y) {
+        const size_t i = (size_t(y) * s.w + x) * 4;
+        INFO("pixel " << x << ", " << y);
+        REQUIRE(std::memcmp(&a[i], &s.radiance[i], 3 * sizeof(float)) == 0);
+      }
+    for (int x : {26, 27, 28, 29}) {
+      INFO("ceiling column " << x << ": " << column_mean(s, a, x));
+      CHECK(std::abs(column_mean(s, a, x) - 0.3) < 0.03);
+    }
+    // Unmarked (every part 0), the same filter carries the light into the ceiling or mixes
+    // the rim's pixels: the test can see both.
+    const Synthetic u = make(n, false);
+    const std::vector<float> b = u.denoise();
+    double rim_change = 0;
+    for (int y = 0; y < u.h; ++y) rim_change = std::max(rim_change, double(std::abs(u.at(b, 30, y) - u.at(u.radiance, 30, y))));
+    INFO("unmarked: column 29 " << column_mean(u, b, 29) << ", the largest change of a rim pixel " << rim_change);
+    CHECK((std::abs(column_mean(u, b, 29) - 0.3) > 0.03 || rim_change > 0.5));
+  }
+}
+
 TEST_CASE("denoiser: a linear ramp of radiance on a plane comes back to the borders (the regression)", "[gpu][denoise]") {
   test_gl();
   // Noise-free radiance 0.2 + 0.01 x + 0.005 y on a slanted plane, reported with a variance
@@ -291,6 +336,49 @@ TEST_CASE("denoiser: the auxiliaries leave the raw image byte-identical; the fil
     INFO((compute ? "compute" : "fragment") << " kernel");
     CHECK(raw[0] == raw[1]);
   }
+}
+
+TEST_CASE("denoiser: the auxiliaries mark a light the camera sees, not its image in a mirror", "[gpu][denoise]") {
+  test_gl();
+  // A light (Emit) left of centre and a sphere right of it that is a mirror or diffuse, in
+  // a grey room. Both spheres cover the same pixels either way, so the marked part of the
+  // image (auxiliary 1's w, camera_aux.glsl) is the same: the mirror's image of the light is
+  // not marked (left raw, glass's per-sample choices would keep their fireflies).
+  auto marked = [](bool mirror, std::vector<float>* aux) {
+    Material wall;
+    wall.tint = glm::vec3(0.5f);
+    Scene scene = closed_room(wall);
+    Material light = Emit{};
+    light.emission = glm::vec3(5.0f);
+    Material ball = mirror ? Material(Reflect{}) : Material{};
+    add_sphere(scene, {-0.35f, 0.0f, -0.6f}, 0.2f, add_material(scene, light));
+    add_sphere(scene, {0.35f, 0.0f, -0.6f}, 0.3f, add_material(scene, ball));
+    Renderer r;
+    r.resize(48, 32);
+    RenderSettings st;
+    st.aux = true;
+    st.sample_limit = 4;
+    r.set_settings(st);
+    r.set_scene(scene);
+    while (!r.converged()) r.step();
+    *aux = r.accumulator().read_aux(1);
+    double sum = 0;
+    for (size_t i = 3; i < aux->size(); i += 4) sum += (*aux)[i];
+    return sum;
+  };
+  std::vector<float> a, b;
+  const double with_mirror = marked(true, &a), with_diffuse = marked(false, &b);
+  CHECK(with_mirror > 20.0);  // the light covers about 30 of the 1536 pixels
+  CHECK(with_mirror == with_diffuse);
+  // The light's centre pixel is all light; the walls are not.
+  const int w = 48;
+  auto at = [&](int x, int y) { return a[(size_t(y) * w + x) * 4 + 3]; };
+  int full = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < w; ++x) full += at(x, y) == 1.0f;
+  CHECK(full > 5);
+  CHECK(at(2, 2) == 0.0f);
+  CHECK(at(45, 29) == 0.0f);
 }
 
 TEST_CASE("denoiser: in slices of a few rows, the same image as one run, bit for bit, below and above the gate", "[gpu][denoise]") {
