@@ -17,7 +17,11 @@
 //     a-trous iteration 1 (u_noisy) fitted in a window as linear in the screen offset,
 //     with the geometric weights and range weights from the last iteration's output (the
 //     guide, u_input); the pixel gets the fit's value at its centre;
-//   2 finish: re-modulated by the albedo and blended with the raw mean by u_weight.
+//   2 finish: re-modulated by the albedo and blended with the raw mean by u_weight;
+//   4 change: per block of u_block x u_block pixels, the sum of the weight-1 image's
+//     relative squared change, (albedo (filtered - demodulated))^2 / (raw^2 + 0.01) per
+//     channel, and the count of terms: D, from which the blend's weight is measured
+//     (render/denoise.h, Denoiser::start).
 // The output of every pass moves the pixel's own value by a weighted mean of differences
 // (x_p + sum w (x_q - x_p) / sum w; the regression: x_p + the intercept of the fit of
 // x_q - x_p), and the finish adds weight * albedo * (filtered - own demodulated value) to
@@ -33,6 +37,7 @@ uniform int u_step;                  // pass 1: the a-trous step, 1, 2, 4, ...
 uniform float u_weight;              // pass 2: blend weight of the filtered image
 uniform float u_sigma_z, u_sigma_n, u_sigma_l, u_sigma_a;
 uniform float u_reg_rel, u_reg_sd, u_reg_ridge;  // pass 3: the guide's tolerance, the ridge
+uniform int u_block;                 // pass 4: pixels per block side
 out vec4 o_color;
 
 const vec3 kLum = vec3(0.2126, 0.7152, 0.0722);
@@ -207,6 +212,18 @@ void main() {
   float c00 = m11 * m22 - m12 * m12, c01 = m02 * m12 - m01 * m22, c02 = m01 * m12 - m02 * m11;
   float det = m00 * c00 + m01 * c01 + m02 * c02;
   o_color = vec4(yp + (c00 * b0 + c01 * b1 + c02 * b2) / det, gp.a);
+#elif PT_DENOISE_PASS == 4
+  // p is a block here, not a pixel.
+  vec2 sum = vec2(0.0);
+  ivec2 lo = p * u_block, hi = min(lo + u_block, g_size);
+  for (int y = lo.y; y < hi.y; ++y)
+    for (int x = lo.x; x < hi.x; ++x) {
+      ivec2 q = ivec2(x, y);
+      vec3 raw = texelFetch(u_radiance, q, 0).rgb;
+      vec3 change = sees_light(texelFetch(u_aux1, q, 0)) ? vec3(0.0) : safe_albedo(q) * (texelFetch(u_input, q, 0).rgb - demodulated(q));
+      sum += vec2(dot(change * change / (raw * raw + 0.01), vec3(1.0)), 3.0);
+    }
+  o_color = vec4(sum, 0.0, 0.0);
 #else
   vec3 raw = texelFetch(u_radiance, p, 0).rgb;
   vec3 filtered = texelFetch(u_input, p, 0).rgb;

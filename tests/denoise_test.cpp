@@ -39,14 +39,16 @@ struct Synthetic {
   }
   float at(const std::vector<float>& img, int x, int y) const { return img[(size_t(y) * w + x) * 4 + 1]; }
   // The denoised image with blend weight `weight`.
-  std::vector<float> denoise(float weight = 1.0f, DenoiseParams params = {}) const {
+  // With `estimate` >= 0 the weight is measured (Denoiser::run), and left in *measured.
+  std::vector<float> denoise(float weight = 1.0f, DenoiseParams params = {}, double estimate = -1.0, float* measured = nullptr) const {
     Texture r(w, h, GL_RGBA32F, radiance.data()), s(w, h, GL_RGBA32F, stats.data()), a0(w, h, GL_RGBA32F, aux0.data()),
         a1(w, h, GL_RGBA32F, aux1.data());
     GLuint vao = 0;
     glGenVertexArrays(1, &vao);
     Denoiser d;
     d.params = params;
-    d.run(DenoiseInputs{&r, &s, &a0, &a1, samples, GL_RGBA32F}, weight, vao);
+    d.run(DenoiseInputs{&r, &s, &a0, &a1, samples, GL_RGBA32F}, weight, vao, estimate);
+    if (measured) *measured = d.weight();
     std::vector<float> out = d.read();
     glDeleteVertexArrays(1, &vao);
     return out;
@@ -296,6 +298,41 @@ TEST_CASE("denoiser: a noisy flat region's variance falls at least 25-fold", "[g
   const double before = variance(s.radiance), after = variance(out);
   INFO("variance before " << before << ", after " << after << ": " << before / after << "x lower");
   CHECK(before / after > 25.0);
+}
+
+TEST_CASE("denoiser: the measured blend weight is min(1, E / D), D the filter's own change, and fades with E", "[gpu][denoise]") {
+  test_gl();
+  // A noisy ramp with an albedo edge (both passes above the gate run), 130x70 pixels: not a
+  // whole number of the change pass's blocks.
+  Synthetic s(130, 70);
+  std::mt19937 rng(9);
+  std::normal_distribution<float> noise(0.0f, 0.05f);
+  for (int y = 0; y < s.h; ++y)
+    for (int x = 0; x < s.w; ++x) s.set(x, y, 0.2f + 0.004f * float(x) + noise(rng), 0.0025f, x < 65 ? 0.5f : 0.6f, 1.0f + 0.01f * float(x));
+  const std::vector<float> full = s.denoise(1.0f);  // weight 1, none measured
+  double d = 0;  // the change of the weight-1 image, relative, per channel, as the pass sums it
+  for (size_t i = 0; i < full.size(); i += 4)
+    for (int c = 0; c < 3; ++c) {
+      const double raw = s.radiance[i + c], dc = double(full[i + c]) - raw;
+      d += dc * dc / (raw * raw + 0.01);
+    }
+  d /= double(s.w) * s.h * 3;
+  REQUIRE(d > 0);
+  for (double e : {4.0 * d, 0.5 * d, 0.1 * d, 1e-6 * d}) {
+    INFO("E = " << e / d << " D");
+    float w = -1.0f;
+    const std::vector<float> out = s.denoise(1.0f, {}, e, &w);
+    CHECK(w == Approx(std::min(1.0, e / d)).epsilon(1e-3));
+    double worst = 0;  // out is raw + w (full - raw)
+    for (size_t i = 0; i < out.size(); i += 4)
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(double(out[i + c]) - (s.radiance[i + c] + double(w) * (full[i + c] - s.radiance[i + c]))));
+    CHECK(worst < 1e-5);
+  }
+  // The cap: a given weight of 0.5 and E above D measure 0.5.
+  float w = -1.0f;
+  s.denoise(0.5f, {}, 4.0 * d, &w);
+  CHECK(w == 0.5f);
 }
 
 TEST_CASE("denoiser: the auxiliaries leave the raw image byte-identical; the filter only reads it", "[gpu][denoise]") {

@@ -217,7 +217,8 @@ class App {
   std::vector<ErrorPoint> error_history_;  // since the last restart
   float target_relmse_ = 0.0f;             // 0: none
   // The denoiser (render/denoise.h) on the displayed image: the panel's toggle, on by
-  // default; its blend weight falls from 1 as the last estimate falls (denoise_weight).
+  // default; its blend weight, measured by the filter from the last estimate (Denoiser::run),
+  // falls from 1 as the estimate falls below the filter's own error.
   bool denoise_ = true;
   float denoise_blend() const;
   int target_stop_at_ = 0;                 // the samples at which an estimate reached the target; 0: not reached

@@ -186,7 +186,7 @@ void App::draw_panel() {
     if (denoise_) {  // the raw estimate above, the denoised image as shown here
       ImGui::SameLine();
       if (ImGui::Button("save denoised HDR"))
-        options_.save_file("pathtracer-denoised.hdr", encode_hdr(w, h, renderer_->read_denoised(denoise_blend())), "image/vnd.radiance");
+        options_.save_file("pathtracer-denoised.hdr", encode_hdr(w, h, renderer_->read_denoised(1.0f)), "image/vnd.radiance");
     }
   }
 

@@ -82,11 +82,14 @@ RenderSettings App::render_settings() const {
   const int stop = target_stop_at_ > 0 ? target_stop_at_ : estimate_due_ && renderer_->mid_sweep() ? n + 1 : 0;
   if (stop > 0 && (s.sample_limit <= 0 || stop < s.sample_limit)) s.sample_limit = stop;
   // s.aux is on in settings_ itself (App's constructor says why).
-  s.denoise = denoise_ ? denoise_blend() : 0.0f;
+  // The blend's weight is measured by the filter from the estimate (Denoiser::run), the
+  // last one scaled to the current samples as the error falls, 1/n.
+  s.denoise = denoise_ ? 1.0f : 0.0f;
+  s.denoise_estimate = error_history_.empty() || n <= 0 ? -1.0 : error_history_.back().rel_mse * error_history_.back().samples / n;
   return s;
 }
 
-float App::denoise_blend() const { return error_history_.empty() ? 1.0f : denoise_weight(error_history_.back().rel_mse); }
+float App::denoise_blend() const { return renderer_ && renderer_->denoised_samples() > 0 ? renderer_->denoiser().weight() : 1.0f; }
 
 double App::time_denoise(bool regression) {
   if (!renderer_ || renderer_->samples() == 0) return -1.0;

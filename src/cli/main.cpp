@@ -41,15 +41,22 @@ bool write_image(const std::string& out, int w, int h, const std::vector<float>&
 // its programs), its images and the auxiliaries. false when a file cannot be written.
 bool denoise_outputs(const Options& o, Renderer& r, const ErrorEstimate& est) {
   r.denoiser().params = o.denoise_params;
-  const float automatic = denoise_weight(est.rel_mse, est.known);
-  const float weight = o.denoise_weight >= 0.0f ? o.denoise_weight : automatic;
-  const std::vector<double> ms = r.time_denoiser(weight);
-  std::printf("denoised: blend weight %.4f (from the estimated relMSE: %.4f), %d iterations in %.2f ms (median of 3, %.2f..%.2f)\n",
-              weight, automatic, r.denoiser().params.iterations, ms[1], ms[0], ms[2]);
+  // The automatic weight, measured from the estimate by the timed runs (Denoiser::run);
+  // --denoise-weight W then replaces it (and is reported beside it).
   RenderSettings s = r.settings();
-  s.denoise = weight;  // read_display shows the denoised image (weight 0: the raw one, the same bits)
+  s.denoise = 1.0f;  // read_display shows the denoised image (weight 0: the raw one, the same bits)
+  s.denoise_estimate = est.known ? est.rel_mse : -1.0;
   r.set_settings(s);
-  const std::vector<float> img = r.read_denoised(weight);
+  const std::vector<double> ms = r.time_denoiser(1.0f);
+  const float automatic = r.denoiser().weight();
+  if (o.denoise_weight >= 0.0f) {
+    s.denoise = o.denoise_weight;
+    s.denoise_estimate = -1.0;
+    r.set_settings(s);
+  }
+  std::printf("denoised: blend weight %.4f (from the estimated relMSE: %.4f), %d iterations in %.2f ms (median of 3, %.2f..%.2f)\n",
+              double(s.denoise_estimate >= 0.0 ? automatic : s.denoise), double(automatic), r.denoiser().params.iterations, ms[1], ms[0], ms[2]);
+  const std::vector<float> img = r.read_denoised(s.denoise);
   for (const std::string& out : o.outs_denoised) {
     if (!write_image(out, o.width, o.height, img, ends_with(out, ".png") ? r.read_display() : std::vector<uint8_t>())) {
       std::fprintf(stderr, "pathtracer: cannot write %s\n", out.c_str());

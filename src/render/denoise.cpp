@@ -61,6 +61,7 @@ void Denoiser::pass(int kind, const Texture* input, const Framebuffer& target, c
   p.set("u_sigma_a", params.gated(in.samples) ? 0.0f : params.sigma_a);
   p.set("u_step", step);
   p.set("u_weight", weight);
+  p.set("u_block", kChangeBlock);
   in.radiance->bind(0);
   in.stats->bind(1);
   in.aux0->bind(2);
@@ -68,7 +69,8 @@ void Denoiser::pass(int kind, const Texture* input, const Framebuffer& target, c
   if (input) input->bind(4);
   if (noisy) noisy->bind(5);
   glBindFramebuffer(GL_FRAMEBUFFER, target.id());
-  glViewport(0, 0, width_, height_);
+  if (kind == 4) glViewport(0, 0, change_.width(), change_.height());
+  else glViewport(0, 0, width_, height_);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   const bool band = rows > 0 && (row > 0 || rows < height_);
@@ -90,14 +92,14 @@ double Denoiser::units(int kind) const {
   return 0.2;
 }
 
-void Denoiser::run(const DenoiseInputs& in, float weight, GLuint vao) {
+void Denoiser::run(const DenoiseInputs& in, float weight, GLuint vao, double estimate) {
   const auto t0 = std::chrono::steady_clock::now();
-  start(in, weight);
+  start(in, weight, estimate);
   advance(in, vao, std::numeric_limits<double>::infinity());
   last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-void Denoiser::start(const DenoiseInputs& in, float weight) {
+void Denoiser::start(const DenoiseInputs& in, float weight, double estimate) {
   const int w = in.radiance->width(), h = in.radiance->height();
   if (w != width_ || h != height_ || in.format != format_) {
     width_ = w;
@@ -136,11 +138,29 @@ void Denoiser::start(const DenoiseInputs& in, float weight) {
     plan_.push_back({3, cur, next, 0, keep});
     cur = next;
   }
+  if (estimate >= 0.0 && format_ == GL_RGBA32F && weight > 0.0f) plan_.push_back({4, cur, -1, 0, -1});
   plan_.push_back({2, cur, -1, 0, -1});
   next_ = 0;
   row_ = 0;
   samples_ = in.samples;
   weight_ = std::clamp(weight, 0.0f, 1.0f);
+  estimate_ = estimate;
+  if (estimate >= 0.0 && format_ != GL_RGBA32F) weight_ *= denoise_weight(estimate);  // no float sums: the fixed fade
+}
+
+void Denoiser::measure_weight(const DenoiseInputs& in, const Texture& filtered, GLuint vao) {
+  const int bw = (width_ + kChangeBlock - 1) / kChangeBlock, bh = (height_ + kChangeBlock - 1) / kChangeBlock;
+  if (change_.width() != bw || change_.height() != bh) {
+    change_ = Texture(bw, bh, GL_RGBA32F, nullptr);
+    change_fbo_ = Framebuffer(change_);
+  }
+  pass(4, &filtered, change_fbo_, in, vao);
+  const std::vector<float> sums = read_rgba_float(change_fbo_.id(), 0, bw, bh);
+  double d = 0.0, n = 0.0;
+  for (size_t i = 0; i + 1 < sums.size(); i += 4) d += sums[i], n += sums[i + 1];
+  d = n > 0.0 ? d / n : 0.0;
+  // The filter changed nothing (D = 0): any weight gives the same image; keep the given one.
+  if (d > 0.0) weight_ *= float(std::min(1.0, estimate_ / d));
 }
 
 bool Denoiser::advance(const DenoiseInputs& inputs, GLuint vao, double budget) {
@@ -148,6 +168,12 @@ bool Denoiser::advance(const DenoiseInputs& inputs, GLuint vao, double budget) {
   in.samples = samples_;  // as planned (the gate; the accumulator may have more by now)
   for (bool drew = false; next_ < plan_.size() && budget > 0.0; drew = true) {
     const Pass& p = plan_[next_];
+    if (p.kind == 4) {  // whole (a small target), then the weight for the finish
+      measure_weight(in, tex_[p.input], vao);
+      budget -= double(width_) * height_ * units(p.kind);
+      ++next_;
+      continue;
+    }
     const double per_row = double(width_) * units(p.kind);
     if (drew && budget < per_row) break;  // at least one row a call, else within the budget
     const int rows = budget >= per_row * (height_ - row_) ? height_ - row_ : std::clamp(int(budget / per_row), 1, height_ - row_);
@@ -164,19 +190,19 @@ bool Denoiser::advance(const DenoiseInputs& inputs, GLuint vao, double budget) {
   return next_ >= plan_.size();
 }
 
-std::vector<double> Denoiser::time(const Accumulator& a, float weight, GLuint vao, int runs) {
+std::vector<double> Denoiser::time(const Accumulator& a, float weight, GLuint vao, int runs, double estimate) {
   float pixel[4];
   const auto wait = [&] {
     glBindFramebuffer(GL_FRAMEBUFFER, out_fbo_.id());
     glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, pixel);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   };
-  run(a, weight, vao);
+  run(a, weight, vao, estimate);
   wait();
   std::vector<double> ms;
   for (int i = 0; i < runs; ++i) {
     const auto t0 = std::chrono::steady_clock::now();
-    run(a, weight, vao);
+    run(a, weight, vao, estimate);
     wait();
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }

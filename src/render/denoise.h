@@ -11,8 +11,8 @@
 // multiplied by the albedo again. It needs the camera pass's auxiliaries
 // (RenderSettings::aux: albedo, normal, depth; camera_aux.glsl) and reads the
 // accumulator, never writes it: the running mean stays unbiased, and the filtered image
-// is blended with it by a weight that falls with the estimated relMSE (denoise_weight),
-// so a converged image is the raw one. Measured: docs/denoise.md.
+// is blended with it by a weight measured from the estimated relMSE and the filter's own
+// change (Denoiser::run), so a converged image tends to the raw one. Measured: docs/denoise.md.
 #pragma once
 #include <vector>
 
@@ -60,8 +60,9 @@ struct DenoiseParams {
   bool gated(int samples) const { return samples < min_samples; }
 };
 
-// The blend weight of the filtered image given the raw image's estimated relMSE (the
-// renderer's own, core/metrics.h; no estimate yet: 1): 1 while the image is noisy, falling
+// The fixed fade, for a half-float accumulator (Denoiser::run measures the weight
+// otherwise): the blend weight of the filtered image given the raw image's estimated
+// relMSE (the renderer's own, core/metrics.h; no estimate yet: 1): 1 while the image is noisy, falling
 // log-linearly to 0 between kFadeHigh and kFadeLow, where the filter's own error (its
 // bias at edges and in the lighting's gradients) is no longer below the raw image's: in
 // the Cornell box at 128x128 between 256 and 1024 spp (docs/denoise.md).
@@ -74,8 +75,17 @@ class Denoiser {
   // Filters the accumulator's current mean (a.aux() must be on) into output(): raw +
   // weight x (filtered - raw); weight 0 gives the raw mean bit for bit. vao: a vertex
   // array for the fullscreen triangle (no attributes). Leaves the default framebuffer bound.
-  void run(const DenoiseInputs& in, float weight, GLuint vao);
-  void run(const Accumulator& a, float weight, GLuint vao) { run(DenoiseInputs::of(a), weight, vao); }
+  //
+  // With `estimate` >= 0 (the raw mean's estimated relMSE E, core/metrics.h) the weight is
+  // measured instead, weight x min(1, E / D), D the mean relative squared change of the
+  // weight-1 image, (denoised - raw)^2 / (raw^2 + 0.01), summed on the GPU before the finish
+  // (one small read-back a run). With raw = T + n and the denoised image T + b, E[D] = E + B
+  // and (1 - w)^2 E + w^2 B is least at w = E / (E + B) = E / D, where it is E B / (E + B),
+  // below both: the blend beats the raw and the filtered image alike, and fades to the raw
+  // one as E falls below the filter's own error B (docs/denoise.md). A half-float
+  // accumulator (no float sums) takes denoise_weight(E) instead.
+  void run(const DenoiseInputs& in, float weight, GLuint vao, double estimate = -1.0);
+  void run(const Accumulator& a, float weight, GLuint vao, double estimate = -1.0) { run(DenoiseInputs::of(a), weight, vao, estimate); }
   // The same run in slices across frames (the page: at 512x512 a run takes 1.3-3.4 s in
   // SwiftShader, docs/denoise.md, which froze the page that long). start() plans run()'s
   // passes for in.samples (the gate, the variance's scale) and `weight`; advance() draws
@@ -83,7 +93,7 @@ class Denoiser {
   // iteration, kUnits), reading `in`'s textures as they are then, and returns true once
   // output() holds the whole image (which it held in part, the last pass's bands, meanwhile).
   // run() is start() and one advance() without a limit: the same draws, whole.
-  void start(const DenoiseInputs& in, float weight);
+  void start(const DenoiseInputs& in, float weight, double estimate = -1.0);
   bool advance(const DenoiseInputs& in, GLuint vao, double units);
   bool running() const { return next_ < plan_.size(); }
   // A pass's work per pixel in units: prepare, an a-trous iteration (25 taps), finish, and
@@ -91,13 +101,14 @@ class Denoiser {
   // 512x512: 5 iterations 250 ms each, the regression 2.0 s, docs/denoise.md).
   double units(int kind) const;
   const Texture& output() const { return out_; }
+  float weight() const { return weight_; }  // the blend's weight of the last run (measured: once its change pass ran)
   std::vector<float> read() const;  // RGB the denoised radiance, A 1; rows bottom to top
   double last_ms() const { return last_ms_; }  // CPU time of the last run's calls (not waited for)
   // The filter's cost: `runs` runs on the accumulator's mean after one that builds what
   // they need, each waited for by reading one pixel of the output back (WebGL's finish
   // does not wait); each run's milliseconds, sorted. The CLI's --denoise and the page's
   // ptTimeDenoise print their median.
-  std::vector<double> time(const Accumulator& a, float weight, GLuint vao, int runs = 3);
+  std::vector<double> time(const Accumulator& a, float weight, GLuint vao, int runs = 3, double estimate = -1.0);
 
  private:
   void pass(int kind, const Texture* input, const Framebuffer& target, const DenoiseInputs& in, GLuint vao, int step = 0,
@@ -111,7 +122,12 @@ class Denoiser {
   size_t next_ = 0;
   int row_ = 0, samples_ = 0;
   float weight_ = 0.0f;
-  Program programs_[4];  // prepare, one iteration, finish, regression
+  double estimate_ = -1.0;  // E for the measured weight (start()); < 0: the weight as given
+  static constexpr int kChangeBlock = 16;  // pixels per block side of the change pass's sums
+  Program programs_[5];  // prepare, one iteration, finish, regression, change
+  Texture change_;        // the change pass's block sums (RGBA32F: sum, count)
+  Framebuffer change_fbo_;
+  void measure_weight(const DenoiseInputs& in, const Texture& filtered, GLuint vao);
   int reg_built_[2] = {0, 0};  // the regression program's radius and stride
   Texture tex_[3];  // the a-trous ping-pong, and the regression's input (made only once it runs)
   Framebuffer fbo_[3];

@@ -155,6 +155,7 @@ void Renderer::set_settings(const RenderSettings& s) {
   a.band_rows = b.band_rows;
   a.band_columns = b.band_columns;
   a.denoise = b.denoise;
+  a.denoise_estimate = b.denoise_estimate;
   a.coarse = b.coarse;  // what the display shows first, not the full-resolution estimate
   if (!(a == b)) restart();
   const bool new_mode = s.mode != settings_.mode || s.compute != settings_.compute || s.aux != settings_.aux || s.adaptive != settings_.adaptive ||
@@ -305,9 +306,10 @@ const Texture& Renderer::shown() const {
 
 const Texture& Renderer::denoised(float weight) const {
   if (denoised_.epoch != accum_.epoch() || denoised_.samples != samples() || denoised_.weight != weight ||
+      denoised_.estimate != settings_.denoise_estimate ||
       denoiser_.output().width() != width() || denoiser_.output().height() != height()) {
-    denoiser_.run(accum_, weight, vao_);
-    denoised_ = {accum_.epoch(), samples(), weight};
+    denoiser_.run(accum_, weight, vao_, settings_.denoise_estimate);
+    denoised_ = {accum_.epoch(), samples(), weight, settings_.denoise_estimate};
     job_ = denoised_;  // a sliced run it interrupted is dropped; the next is due at twice these samples
   }
   return denoiser_.output();
@@ -324,8 +326,8 @@ void Renderer::advance_denoiser(double units) {
   const DenoiseInputs in = DenoiseInputs::of(accum_);
   const bool same = job_.epoch == accum_.epoch() && denoiser_.output().width() == width() && denoiser_.output().height() == height();
   if (!same || (!denoiser_.running() && samples() >= 2 * job_.samples)) {  // a restart (the run in progress dropped), or due
-    denoiser_.start(in, settings_.denoise);
-    job_ = {accum_.epoch(), samples(), settings_.denoise};
+    denoiser_.start(in, settings_.denoise, settings_.denoise_estimate);
+    job_ = {accum_.epoch(), samples(), settings_.denoise, settings_.denoise_estimate};
   }
   if (denoiser_.running() && denoiser_.advance(in, vao_, units)) denoised_ = job_;
 }
@@ -338,9 +340,9 @@ std::vector<float> Renderer::read_denoised(float weight) const {
 std::vector<double> Renderer::time_denoiser(float weight, int runs, const DenoiseParams* params) const {
   const DenoiseParams kept = denoiser_.params;
   if (params) denoiser_.params = *params;
-  const std::vector<double> ms = denoiser_.time(accum_, weight, vao_, runs);
+  const std::vector<double> ms = denoiser_.time(accum_, weight, vao_, runs, settings_.denoise_estimate);
   denoiser_.params = kept;
-  denoised_ = job_ = params ? Filtered{} : Filtered{accum_.epoch(), samples(), weight};
+  denoised_ = job_ = params ? Filtered{} : Filtered{accum_.epoch(), samples(), weight, settings_.denoise_estimate};
   return ms;
 }
 

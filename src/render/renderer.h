@@ -40,6 +40,9 @@ struct RenderSettings {
   bool compute = false;  // the compute kernel where the context has one (compute_supported())
   bool aux = false;      // the camera pass also writes the denoiser's first-hit auxiliaries
   float denoise = 0.0f;  // with aux: the denoised image's blend weight in display() (0: raw)
+  // The raw mean's estimated relMSE at the current samples (core/metrics.h; < 0: unknown):
+  // known, the blend's weight is measured, denoise x min(1, E / D) (Denoiser::run).
+  double denoise_estimate = -1.0;
   bool adaptive = false; // per-tile sample counts from the variance (render/adaptive.h); a change restarts
   Accel accel = Accel::Auto;  // BVH or a flat loop (accel/accel_choice.h); auto: by the primitive count
   // The glTF BSDF's multiple-scattering energy compensation (materials/gltf_ms.glsl; on by
@@ -223,6 +226,7 @@ class Renderer {
   struct Filtered {
     int epoch = -1, samples = -1;
     float weight = -1.0f;
+    double estimate = -2.0;  // settings_.denoise_estimate of the run (its weight measured from it)
   };
   mutable Filtered denoised_;  // what denoiser_'s output holds, complete
   mutable Filtered job_;       // the sliced run in progress or last finished (advance_denoiser)

@@ -148,8 +148,9 @@ async function main() {
       blends.push(st.denoise);
       images.push(await page.evaluate(() => window.ptRadiance()));
     }
-    // The denoiser is on by default and its blend weight falls as the estimate does
-    // (render/denoise.h); the radiance above is the raw mean all the same.
+    // The denoiser is on by default; its blend weight is measured from the estimate and the
+    // filter's change (render/denoise.h, Denoiser::run: 1 while the image is noisy, then
+    // falling); the radiance above is the raw mean all the same.
     console.log(`# denoiser blend weight at ${checkpoints.join(",")} spp: ${blends.map((b) => b.toFixed(3)).join(" ")}`);
     check("the denoiser is on by default while the image is noisy", blends[0] > 0 && blends.every((b, i) => i === 0 || b <= blends[i - 1]),
           `weights ${blends.join(" ")}`);
