@@ -89,14 +89,14 @@ Synthetic noisy_step(float right_depth) {
 
 // A noisy ramp at `samples` spp with an albedo edge and a depth slope: both the albedo term
 // and the regression change it.
-Synthetic noisy_ramp(int samples, unsigned seed) {
-  Synthetic s(48, 32);
+Synthetic noisy_ramp(int samples, unsigned seed, int w = 48, int h = 32) {
+  Synthetic s(w, h);
   s.samples = samples;
   std::mt19937 rng(seed);
   std::normal_distribution<float> noise(0.0f, 0.05f);
   for (int y = 0; y < s.h; ++y)
     for (int x = 0; x < s.w; ++x)
-      s.set(x, y, 0.2f + 0.01f * float(x) + noise(rng), 0.0025f, x < 24 ? 0.5f : 0.6f, 1.0f + 0.02f * float(x));
+      s.set(x, y, 0.2f + 0.48f / float(w) * float(x) + noise(rng), 0.0025f, x < w / 2 ? 0.5f : 0.6f, 1.0f + 0.02f * float(x));
   return s;
 }
 
@@ -302,13 +302,9 @@ TEST_CASE("denoiser: a noisy flat region's variance falls at least 25-fold", "[g
 
 TEST_CASE("denoiser: the measured blend weight is min(1, E / D), D the filter's own change, and fades with E", "[gpu][denoise]") {
   test_gl();
-  // A noisy ramp with an albedo edge (both passes above the gate run), 130x70 pixels: not a
-  // whole number of the change pass's blocks.
-  Synthetic s(130, 70);
-  std::mt19937 rng(9);
-  std::normal_distribution<float> noise(0.0f, 0.05f);
-  for (int y = 0; y < s.h; ++y)
-    for (int x = 0; x < s.w; ++x) s.set(x, y, 0.2f + 0.004f * float(x) + noise(rng), 0.0025f, x < 65 ? 0.5f : 0.6f, 1.0f + 0.01f * float(x));
+  // A noisy ramp with an albedo edge at 64 spp (both passes above the gate run), 130x70
+  // pixels: not a whole number of the change pass's blocks.
+  const Synthetic s = noisy_ramp(64, 9, 130, 70);
   const std::vector<float> full = s.denoise(1.0f);  // weight 1, none measured
   double d = 0;  // the change of the weight-1 image, relative, per channel, as the pass sums it
   for (size_t i = 0; i < full.size(); i += 4)
