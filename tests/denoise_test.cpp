@@ -329,6 +329,23 @@ TEST_CASE("denoiser: the measured blend weight is min(1, E / D), D the filter's 
   float w = -1.0f;
   s.denoise(0.5f, {}, 4.0 * d, &w);
   CHECK(w == 0.5f);
+  // In slices (the page), weight() stays the last complete run's, the image output() holds,
+  // until the next run is complete.
+  Texture r(s.w, s.h, GL_RGBA32F, s.radiance.data()), st(s.w, s.h, GL_RGBA32F, s.stats.data()),
+      a0(s.w, s.h, GL_RGBA32F, s.aux0.data()), a1(s.w, s.h, GL_RGBA32F, s.aux1.data());
+  GLuint vao = 0;
+  glGenVertexArrays(1, &vao);
+  const DenoiseInputs in{&r, &st, &a0, &a1, s.samples, GL_RGBA32F};
+  Denoiser dn;
+  dn.run(in, 1.0f, vao, 0.5 * d);
+  const float first = dn.weight();
+  CHECK(first == Approx(0.5).epsilon(1e-3));
+  dn.start(in, 1.0f, 0.1 * d);
+  CHECK_FALSE(dn.advance(in, vao, 100.0));
+  CHECK(dn.weight() == first);
+  while (!dn.advance(in, vao, 1e4)) {}
+  CHECK(dn.weight() == Approx(0.1).epsilon(1e-3));
+  glDeleteVertexArrays(1, &vao);
 }
 
 TEST_CASE("denoiser: the auxiliaries leave the raw image byte-identical; the filter only reads it", "[gpu][denoise]") {

@@ -187,7 +187,9 @@ bool Denoiser::advance(const DenoiseInputs& inputs, GLuint vao, double budget) {
     }
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  return next_ >= plan_.size();
+  if (next_ < plan_.size()) return false;
+  done_weight_ = weight_;
+  return true;
 }
 
 std::vector<double> Denoiser::time(const Accumulator& a, float weight, GLuint vao, int runs, double estimate) {

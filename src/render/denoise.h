@@ -101,7 +101,7 @@ class Denoiser {
   // 512x512: 5 iterations 250 ms each, the regression 2.0 s, docs/denoise.md).
   double units(int kind) const;
   const Texture& output() const { return out_; }
-  float weight() const { return weight_; }  // the blend's weight of the last run (measured: once its change pass ran)
+  float weight() const { return done_weight_; }  // the blend's weight of the last complete run (the image output() shows)
   std::vector<float> read() const;  // RGB the denoised radiance, A 1; rows bottom to top
   double last_ms() const { return last_ms_; }  // CPU time of the last run's calls (not waited for)
   // The filter's cost: `runs` runs on the accumulator's mean after one that builds what
@@ -121,7 +121,7 @@ class Denoiser {
   std::vector<Pass> plan_;
   size_t next_ = 0;
   int row_ = 0, samples_ = 0;
-  float weight_ = 0.0f;
+  float weight_ = 0.0f, done_weight_ = 1.0f;  // the run in progress's, the last complete one's
   double estimate_ = -1.0;  // E for the measured weight (start()); < 0: the weight as given
   static constexpr int kChangeBlock = 16;  // pixels per block side of the change pass's sums
   Program programs_[5];  // prepare, one iteration, finish, regression, change
