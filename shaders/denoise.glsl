@@ -19,9 +19,9 @@
 //     guide, u_input); the pixel gets the fit's value at its centre;
 //   2 finish: re-modulated by the albedo and blended with the raw mean by u_weight;
 //   4 change: per block of u_block x u_block pixels, the sum of the weight-1 image's
-//     relative squared change, (albedo (filtered - demodulated))^2 / (raw^2 + 0.01) per
-//     channel, and the count of terms: D, from which the blend's weight is measured
-//     (render/denoise.h, Denoiser::start).
+//     relative squared change, (albedo (filtered - demodulated))^2 / (raw^2 + 0.01) over
+//     the channels: D's terms, from which the blend's weight is measured (render/denoise.h,
+//     Denoiser::run).
 // The output of every pass moves the pixel's own value by a weighted mean of differences
 // (x_p + sum w (x_q - x_p) / sum w; the regression: x_p + the intercept of the fit of
 // x_q - x_p), and the finish adds weight * albedo * (filtered - own demodulated value) to
@@ -214,16 +214,16 @@ void main() {
   o_color = vec4(yp + (c00 * b0 + c01 * b1 + c02 * b2) / det, gp.a);
 #elif PT_DENOISE_PASS == 4
   // p is a block here, not a pixel.
-  vec2 sum = vec2(0.0);
+  float sum = 0.0;
   ivec2 lo = p * u_block, hi = min(lo + u_block, g_size);
   for (int y = lo.y; y < hi.y; ++y)
     for (int x = lo.x; x < hi.x; ++x) {
       ivec2 q = ivec2(x, y);
       vec3 raw = texelFetch(u_radiance, q, 0).rgb;
       vec3 change = sees_light(texelFetch(u_aux1, q, 0)) ? vec3(0.0) : safe_albedo(q) * (texelFetch(u_input, q, 0).rgb - demodulated(q));
-      sum += vec2(dot(change * change / (raw * raw + 0.01), vec3(1.0)), 3.0);
+      sum += dot(change * change / (raw * raw + 0.01), vec3(1.0));
     }
-  o_color = vec4(sum, 0.0, 0.0);
+  o_color = vec4(sum, 0.0, 0.0, 0.0);
 #else
   vec3 raw = texelFetch(u_radiance, p, 0).rgb;
   vec3 filtered = texelFetch(u_input, p, 0).rgb;

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""The blend weight that the fade could use (docs/denoise.md, "A light's own pixels stay
-raw"): from a tools/denoise_eval.py folder, per scene and sample count, the raw image's
+"""The measured blend weight recomputed from saved images (docs/denoise.md, "The fade"; the
+renderer ships it since 2026-12-07, this tool evaluated it first and now cross-checks it,
+or tries it on images rendered elsewhere): from a tools/denoise_eval.py folder, per scene
+and sample count, the raw image's
 estimated relMSE E (the renderer's own, from the run's JSON), the measured change of the
 denoised image D = mean((denoised - raw)^2 / (raw^2 + 0.01)), the weight w = min(1, E / D),
 and the true relMSE of raw + w (denoised - raw) against the reference, beside the raw, the

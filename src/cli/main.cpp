@@ -55,7 +55,7 @@ bool denoise_outputs(const Options& o, Renderer& r, const ErrorEstimate& est) {
     r.set_settings(s);
   }
   std::printf("denoised: blend weight %.4f (from the estimated relMSE: %.4f), %d iterations in %.2f ms (median of 3, %.2f..%.2f)\n",
-              double(s.denoise_estimate >= 0.0 ? automatic : s.denoise), double(automatic), r.denoiser().params.iterations, ms[1], ms[0], ms[2]);
+              double(o.denoise_weight >= 0.0f ? o.denoise_weight : automatic), double(automatic), r.denoiser().params.iterations, ms[1], ms[0], ms[2]);
   const std::vector<float> img = r.read_denoised(s.denoise);
   for (const std::string& out : o.outs_denoised) {
     if (!write_image(out, o.width, o.height, img, ends_with(out, ".png") ? r.read_display() : std::vector<uint8_t>())) {

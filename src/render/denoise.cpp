@@ -156,9 +156,9 @@ void Denoiser::measure_weight(const DenoiseInputs& in, const Texture& filtered, 
   }
   pass(4, &filtered, change_fbo_, in, vao);
   const std::vector<float> sums = read_rgba_float(change_fbo_.id(), 0, bw, bh);
-  double d = 0.0, n = 0.0;
-  for (size_t i = 0; i + 1 < sums.size(); i += 4) d += sums[i], n += sums[i + 1];
-  d = n > 0.0 ? d / n : 0.0;
+  double d = 0.0;
+  for (size_t i = 0; i < sums.size(); i += 4) d += sums[i];
+  d /= 3.0 * width_ * height_;  // per pixel and channel
   // The filter changed nothing (D = 0): any weight gives the same image; keep the given one.
   if (d > 0.0) weight_ *= float(std::min(1.0, estimate_ / d));
 }

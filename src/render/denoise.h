@@ -125,7 +125,7 @@ class Denoiser {
   double estimate_ = -1.0;  // E for the measured weight (start()); < 0: the weight as given
   static constexpr int kChangeBlock = 16;  // pixels per block side of the change pass's sums
   Program programs_[5];  // prepare, one iteration, finish, regression, change
-  Texture change_;        // the change pass's block sums (RGBA32F: sum, count)
+  Texture change_;        // the change pass's block sums (RGBA32F, R)
   Framebuffer change_fbo_;
   void measure_weight(const DenoiseInputs& in, const Texture& filtered, GLuint vao);
   int reg_built_[2] = {0, 0};  // the regression program's radius and stride
