@@ -114,8 +114,9 @@ struct Run {
 
 // `sweeps` full-resolution sweeps in tiles of 5 rows x 24 columns (several per coarse
 // level too), the ladder on or off.
-Run render(Renderer& r, bool coarse, bool compute, int sweeps) {
+Run render(Renderer& r, bool coarse, bool compute, int sweeps, bool adaptive = false) {
   RenderSettings s;
+  s.adaptive = adaptive;
   s.spp_per_pass = 1;
   s.band_rows = 5;
   s.band_columns = 24;
@@ -144,11 +145,14 @@ TEST_CASE("The coarse ladder leaves the full-resolution accumulation byte-identi
   Renderer r;
   r.resize(61, 43);  // not a multiple of 8: the levels' last pixels reach past the image
   r.set_scene(scene);
-  for (const bool compute : {false, true}) {
+  for (const bool compute : {false, true})
+    for (const bool adaptive : {false, true}) {
     if (compute && !r.compute_supported()) continue;
-    INFO((compute ? "compute kernel" : "fragment pass"));
-    const Run off = render(r, false, compute, 3);
-    const Run on = render(r, true, compute, 3);
+    INFO((compute ? "compute kernel" : "fragment pass") << (adaptive ? ", adaptive" : ""));
+    // Adaptive sampling: past its uniform start (8 spp), so the tiles' counts differ.
+    const int sweeps = adaptive ? 12 : 3;
+    const Run off = render(r, false, compute, sweeps, adaptive);
+    const Run on = render(r, true, compute, sweeps, adaptive);
     REQUIRE(off.radiance.size() == on.radiance.size());
     CHECK(std::memcmp(off.radiance.data(), on.radiance.data(), off.radiance.size() * sizeof(float)) == 0);
     CHECK(std::memcmp(off.variance.data(), on.variance.data(), off.variance.size() * sizeof(float)) == 0);
@@ -169,10 +173,14 @@ TEST_CASE("A coarse level covers the full frame, upscaled in blocks, and a camer
   test_gl();
   const Scene scene = load_scene_text(kSphereSky, "sphere-sky.xml", false);
   const int w = 96, h = 64;
+  // With adaptive sampling the coarse levels' program reads tile counts too.
+  const bool adaptive = GENERATE(false, true);
+  INFO((adaptive ? "adaptive" : "uniform"));
   Renderer r;
   r.resize(w, h);
   r.set_scene(scene);
   RenderSettings s;
+  s.adaptive = adaptive;
   s.coarse = true;
   s.max_bounces = 2;
   s.band_rows = 16;  // 16 x 96 pixels a draw: a 12 x 8 level in one draw

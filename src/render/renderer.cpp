@@ -164,7 +164,10 @@ void Renderer::set_settings(const RenderSettings& s) {
   accum_.set_aux(s.aux);
   accum_.set_adaptive(s.adaptive);
   accum_.set_count_ops(s.count_ops);
-  for (Accumulator& c : coarse_) c.set_aux(s.aux);  // the same program draws them
+  for (Accumulator& c : coarse_) {  // the same program draws them: with adaptive sampling it reads
+    c.set_aux(s.aux);               // tile counts, which a coarse level's single sweep keeps uniform
+    c.set_adaptive(s.adaptive);     // (before uniform_spp every tile alike: render/adaptive.h)
+  }
   if (new_mode && have_scene_) {
     select_program();
     scene_.update_sh(settings_.mode);

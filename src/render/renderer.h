@@ -112,9 +112,9 @@ class Renderer {
   // The divisor of each axis of the image display() shows: 1 (the full-resolution mean),
   // or a coarse level's 8, 4, 2 while no full-resolution sweep is complete.
   int shown_divisor() const;
-  // The ladder runs where the settings ask for it, but not with adaptive sampling (its
-  // program reads the tile counts, which the coarse levels do not have).
-  bool coarse_on() const { return settings_.coarse && !settings_.adaptive; }
+  // The ladder runs where the settings ask for it, with adaptive sampling too (the coarse
+  // levels are adaptive accumulators whose one sweep gives every tile one sample).
+  bool coarse_on() const { return settings_.coarse; }
   const CoarseLadder& ladder() const;  // since the last restart
   // The pixel samples the last step() drew: its pixels times the sweep's samples per
   // pixel (0 when it drew nothing); a coarse draw's pixels are its own (fewer).
