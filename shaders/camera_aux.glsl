@@ -26,6 +26,7 @@ vec3 g_aux_normal;
 float g_aux_length;
 float g_aux_seen;
 bool g_aux_done;
+bool g_aux_camera;  // the next hit is the camera ray's own
 
 void aux_start() {
   g_aux_albedo = vec3(1.0);
@@ -33,6 +34,7 @@ void aux_start() {
   g_aux_length = 0.0;
   g_aux_seen = 0.0;
   g_aux_done = false;
+  g_aux_camera = true;
 }
 // At each hit, before the material is resolved: t the hit's distance along the ray.
 void aux_surface(Surface sf, vec3 beta, float t) {
@@ -41,9 +43,10 @@ void aux_surface(Surface sf, vec3 beta, float t) {
   g_aux_normal = sf.n;
   if (sf.absorbs) {
     g_aux_albedo = beta;
-    g_aux_seen = g_aux_length == t ? 1.0 : 0.0;  // the camera ray's own hit (the length starts at 0)
+    g_aux_seen = g_aux_camera ? 1.0 : 0.0;
     g_aux_done = true;
   }
+  g_aux_camera = false;
 }
 // Once the material is resolved: a non-delta one ends the chain.
 void aux_material(Surface sf, vec3 beta) {
