@@ -80,15 +80,17 @@ async function measure(context, url, mode) {
   const cpu0 = cpuSnapshot(userDir);
   const r = await page.evaluate((ms) => new Promise((done) => {
     const s0 = window.ptLoadStatus(), t0 = performance.now();
-    let frames = 0, worst = 0, last = t0;
+    let frames = 0, worst = 0, last = t0, prev = s0;
+    const log = [];  // per animation frame: the interval, and whether presents / draws happened since the last
     const tick = () => {
-      const now = performance.now();
+      const now = performance.now(), st = window.ptLoadStatus();
       worst = Math.max(worst, now - last);
+      log.push([now - last, (st.presents ?? 0) - (prev.presents ?? 0), st.paths - prev.paths]);
       last = now;
+      prev = st;
       frames++;
       if (now - t0 < ms) return requestAnimationFrame(tick);
-      const s1 = window.ptLoadStatus();
-      done({ paths: s1.paths - s0.paths, ms: now - t0, frames, worst, samples: s1.samples });
+      done({ paths: st.paths - s0.paths, ms: now - t0, frames, worst, samples: st.samples, log });
     };
     requestAnimationFrame(tick);
   }), Number(opt.seconds) * 1000);
@@ -102,6 +104,21 @@ async function measure(context, url, mode) {
   console.log(`# ${mode}: ${out.pathsPerSecond.toFixed(0)} paths/s, ${out.fps.toFixed(1)} UI frames/s (worst frame ${out.worst.toFixed(0)} ms), ` +
               `draws of ${mode === "raw" ? opt["raw-rows"] + " rows" : out.draw}, ${out.width}x${out.height}, ${out.samples} spp at the end` +
               (errors.length ? `; errors: ${errors.join(" | ")}` : ""));
+  // The frames by what the page did in them (ptLoadStatus().presents, paths): the interval
+  // after a frame is the time its work took the browser and the GPU.
+  const kinds = new Map();
+  for (let i = 0; i + 2 < r.log.length; ++i) {
+    const [, presents, paths] = r.log[i];
+    const key = `${presents > 0 ? "present" : "no present"}, ${paths > 0 ? "draw" : "no draw"}`;
+    const k = kinds.get(key) || { n: 0, ms: 0, ms2: 0, paths: 0 };
+    k.n++;
+    k.ms += r.log[i + 1][0];
+    k.ms2 += r.log[i + 2][0];
+    k.paths += paths;
+    kinds.set(key, k);
+  }
+  console.log(`#   frames: ` + [...kinds].map(([key, k]) => `${key} ${k.n} (next intervals ${(k.ms / k.n).toFixed(1)}, ${(k.ms2 / k.n).toFixed(1)} ms, ` +
+              `${(k.paths / k.n).toFixed(0)} paths)`).join("; "));
   console.log(`#   CPU ms per s: total ${threads.reduce((a, [, v]) => a + v, 0).toFixed(0)}; ` +
               threads.map(([k, v]) => `${k} ${v.toFixed(0)}`).join(", "));
   return out;

@@ -249,7 +249,7 @@ std::string App::load_fields() const {
 
 std::string App::load_status_json() const {
   return "{\"samples\":" + std::to_string(renderer_->samples()) + ",\"paths\":" + json_number(renderer_->paths()) +
-         ",\"compileMs\":" + json_number(renderer_->compile_ms()) + ",\"scene\":" + json_string(scene_.path) +
+         ",\"presents\":" + std::to_string(presents_) + ",\"compileMs\":" + json_number(renderer_->compile_ms()) + ",\"scene\":" + json_string(scene_.path) +
          ",\"accel\":" + (renderer_->using_flat() ? "\"flat\"" : "\"bvh\"") +
          ",\"error\":" + (error_ ? json_string(*error_) : std::string("null")) + ",\"loads\":" + std::to_string(loads_) + "," +
          load_fields() + "," + error_fields() + "}";

@@ -237,3 +237,72 @@ TEST_CASE("A coarse level covers the full frame, upscaled in blocks, and a camer
   CHECK(r.shown_divisor() == 8);
   CHECK(r.mid_sweep());  // the ladder counts as a sweep in progress (the page's clock)
 }
+
+// Renderer::display_cached (the page's present) redraws only the tiles drawn since its
+// last call, or everything when anything else changed: after every kind of change its
+// image equals read_display()'s full tone map, byte for byte.
+TEST_CASE("display_cached equals the full display after tiles, sweeps, coarse levels, settings, restarts and the denoiser",
+          "[gpu][coarse][display]") {
+  test_gl();
+  const Scene scene = load_scene_text(kGreySphere, "sphere-sky.xml", false);
+  const int w = 61, h = 43;
+  Renderer r;
+  r.resize(w, h);
+  r.set_scene(scene);
+  r.set_sliced_denoise(true);
+  RenderSettings s;
+  s.spp_per_pass = 1;
+  s.band_rows = 5;
+  s.band_columns = 24;
+  s.coarse = true;
+  s.max_bounces = 3;
+  s.tonemap = ToneMap::Aces;
+  r.set_settings(s);
+  std::vector<uint8_t> cached(size_t(w) * h * 4);
+  int checks = 0, partial = 0;
+  const auto check = [&](const char* when) {
+    const int before = r.samples();
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.display_cached().id());
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, cached.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const std::vector<uint8_t> full = r.read_display();
+    REQUIRE(full.size() == cached.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < full.size(); ++i) differ += full[i] != cached[i];
+    INFO(when << " at " << before << " spp (mid sweep: " << r.mid_sweep() << ", divisor " << r.shown_divisor() << ")");
+    REQUIRE(differ == 0);
+    ++checks;
+    partial += r.mid_sweep() && r.shown_divisor() == 1;
+  };
+  // Tiles, sweeps and the coarse levels, checked after 1, 2 or 3 draws in turn.
+  for (int i = 0; i < 120; ++i) {
+    r.step();
+    if (i % 3 == 0 || i % 7 == 0) check("draws");
+  }
+  s.exposure = 2.0f;  // a display setting alone
+  r.set_settings(s);
+  check("exposure");
+  s.tonemap = ToneMap::Reinhard;
+  r.set_settings(s);
+  check("tone map");
+  Camera c = r.camera();  // a restart: the coarse ladder again, then tiles
+  c.position.x += 0.1f;
+  r.set_camera(c);
+  check("restart");
+  for (int i = 0; i < 60; ++i) {
+    r.step();
+    if (i % 2 == 0) check("draws after the restart");
+  }
+  // The denoiser's image, in slices between draws: shown once complete, then its next run.
+  s.aux = true;
+  s.denoise = 1.0f;
+  r.set_settings(s);
+  for (int i = 0; i < 300; ++i) {
+    r.step();
+    r.advance_denoiser(500.0);
+    if (i % 2 == 0) check("denoiser");
+  }
+  CHECK(r.denoised_samples() > 0);
+  CHECK(partial > 20);  // most checks compared tiles of a sweep in progress
+  CHECK(checks > 150);
+}
