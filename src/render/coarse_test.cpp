@@ -304,5 +304,14 @@ TEST_CASE("display_cached equals the full display after tiles, sweeps, coarse le
   }
   CHECK(r.denoised_samples() > 0);
   CHECK(partial > 20);  // most checks compared tiles of a sweep in progress
+  // draw_cached (the page's copy to the canvas) draws the cached bytes unchanged.
+  const Texture canvas(w, h, GL_RGBA8, nullptr);
+  const Framebuffer canvas_fbo(canvas);
+  glBindFramebuffer(GL_FRAMEBUFFER, canvas_fbo.id());
+  r.draw_cached(0, 0);
+  std::vector<uint8_t> copied(cached.size());
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, copied.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  CHECK(copied == cached);
   CHECK(checks > 150);
 }
