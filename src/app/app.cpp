@@ -78,7 +78,6 @@ void App::frame(int fb_w, int fb_h, double now_ms) {
 
   fb_w_ = fb_w;
   fb_h_ = fb_h;
-  present_frame_ = options_.raw_rows == 0 && drawn_since_present_ && now_ms - presented_ms_ >= kPartialMs;
   poll_loading();
   handle_input(std::min(dt_ms, 100.0) * 1e-3);
   handle_click();
@@ -101,7 +100,7 @@ bool App::present_due(double now_ms) const {
   // of a frame's time at 960x640). A whole sample (a finished sweep, a restart) shows at once.
   const double since = now_ms - presented_ms_;
   if (options_.raw_rows > 0) return since >= kRawShowMs;
-  return !(frame_key_ == presented_) || present_frame_ || (drew_ && since >= kPartialMs) || since >= kRefreshMs;
+  return !(frame_key_ == presented_) || (drew_ && since >= kPartialMs) || since >= kRefreshMs;
 }
 
 void App::update_auto_exposure() {
@@ -131,7 +130,6 @@ void App::render_passes(double now_ms, double dt_ms) {
     done = pacer_.frame(*renderer_, settings_, dt_ms, now_ms, preparing(), total_samples_);
   }
   drew_ = done > 0;
-  drawn_since_present_ = drawn_since_present_ || drew_;
   // The denoiser's slice (Renderer::advance_denoiser): kDenoiseUnits units of its work per
   // pixel drawn (one draw's worth in a frame without draws), so its share of a frame
   // follows the draw size the pacer chose: at the smallest draw in SwiftShader, 4 x 128
@@ -158,28 +156,30 @@ void App::present(int fb_w, int fb_h, double now_ms) {
   presented_ = frame_key_;
   presented_ms_ = now_ms;
   ++presents_;
-  drawn_since_present_ = false;
-  // The tone-mapped image, kept by the renderer and redrawn only where it changed
-  // (Renderer::display_cached), copied to the canvas: at its size, or scaled to fit.
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb_w, fb_h);
+  glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
   const int w = renderer_->width(), h = renderer_->height();
-  const Framebuffer& shown = renderer_->display_cached();
+  if (w == fb_w && h == fb_h) {
+    image_rect_ = glm::vec4(0.0f, 0.0f, float(w), float(h));
+    renderer_->display(0, 0);
+    return;
+  }
+  // A fixed render size: tone-map into an 8-bit target, then scale it to fit the canvas.
+  if (present_tex_.width() != w || present_tex_.height() != h) {
+    present_tex_ = Texture(w, h, GL_RGBA8, nullptr);
+    present_fbo_ = Framebuffer(present_tex_);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, present_fbo_.id());
+  renderer_->display(0, 0);
   const float s = std::min(float(fb_w) / float(w), float(fb_h) / float(h));
   const int dw = int(float(w) * s), dh = int(float(h) * s);
   const int dx = (fb_w - dw) / 2, dy = (fb_h - dh) / 2;
   image_rect_ = glm::vec4(float(dx), float(dy), float(dw), float(dh));
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, fb_w, fb_h);
-  if (dw != fb_w || dh != fb_h) {  // the bars beside a fitted image
-    glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-  }
-  if (dw == w && dh == h) {  // at its size: drawn (a blit to the canvas cost SwiftShader more)
-    renderer_->draw_cached(dx, dy);
-    return;
-  }
   // A fixed size shows its pixels; a scaled canvas (resolution scale, motion) is smoothed.
   const GLenum up = options_.width > 0 ? GL_NEAREST : GL_LINEAR;
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, shown.id());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, present_fbo_.id());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   glBlitFramebuffer(0, 0, w, h, dx, dy, dx + dw, dy + dh, GL_COLOR_BUFFER_BIT, s >= 1.0f ? up : GL_LINEAR);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -169,10 +169,6 @@ class App {
   };
   Shown presented_, frame_key_;  // the last presented; this frame's
   bool drew_ = false;           // this frame drew samples
-  bool drawn_since_present_ = false;  // samples drawn that no present has shown yet
-  // This frame shows partial sweeps (kPartialMs after the last present): decided at its
-  // start, so that the panel's readouts refresh in it, not in a present of their own.
-  bool present_frame_ = false;
   double presented_ms_ = -1e9;
   long presents_ = 0;  // present() calls (ptLoadStatus().presents: tools/page_cost.mjs)
   FramePacer pacer_;
@@ -240,6 +236,10 @@ class App {
 
   // Mouse look: whether the current left-drag started on the canvas (not on the panel).
   bool dragging_ = false;
+
+  // Offscreen target used when the render size differs from the framebuffer size.
+  Texture present_tex_;
+  Framebuffer present_fbo_;
 
   // A scene on its way through the pipeline (read, packed, uploaded in slices, then
   // waiting for its program); applied by poll_loading once ready.

@@ -178,11 +178,14 @@ void App::apply_scene(ScenePipeline& pipe, const std::optional<Camera>& camera) 
 }
 
 void App::context_restored() {
-  // Every GL name held is stale: drop the renderer (its stale names are not deleted: WebGL
-  // would warn for each), then build it again from the kept scene model.
+  // Every GL name held is stale: drop the offscreen target and the renderer (their stale
+  // names are not deleted: WebGL would warn for each), then build them again from the
+  // kept scene model.
   gl_objects::context_replaced();
   const Camera camera = renderer_->camera();
+  present_fbo_ = Framebuffer();
   presented_ms_ = -1e9;  // the restored canvas is blank: present the next frame
+  present_tex_ = Texture();
   renderer_ = std::make_unique<Renderer>();
   renderer_->set_settings(settings_);
   renderer_->set_sliced_denoise(true);

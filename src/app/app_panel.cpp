@@ -113,10 +113,7 @@ void App::draw_scene_controls() {
 void App::take_readout() {
   const int n = renderer_->samples();
   const bool done = done_ms_ >= 0;
-  // While partial sweeps are being shown, only in a frame that presents them anyway
-  // (present_frame_): a readout's change is a present of its own otherwise.
-  const bool wait = last_frame_ms_ - readout_.ms < kRefreshMs || (drawn_since_present_ && !present_frame_);
-  if (wait && n == readout_.samples && done == readout_.done) return;
+  if (last_frame_ms_ - readout_.ms < kRefreshMs && n == readout_.samples && done == readout_.done) return;
   readout_ = {last_frame_ms_, samples_per_second_, n, done};
 }
 

@@ -180,7 +180,6 @@ bool Denoiser::advance(const DenoiseInputs& inputs, GLuint vao, double budget) {
     pass(p.kind, p.input >= 0 ? &tex_[p.input] : nullptr, p.target >= 0 ? fbo_[p.target] : out_fbo_, in, vao, p.step,
          p.kind == 2 ? weight_ : 0.0f, p.noisy >= 0 ? &tex_[p.noisy] : nullptr, row_, rows);
     budget -= per_row * rows;
-    if (p.target < 0) ++output_writes_;
     row_ += rows;
     if (row_ >= height_) {
       ++next_;

@@ -101,7 +101,6 @@ class Denoiser {
   // 512x512: 5 iterations 250 ms each, the regression 2.0 s, docs/denoise.md).
   double units(int kind) const;
   const Texture& output() const { return out_; }
-  long output_writes() const { return output_writes_; }  // passes (or bands of one) that wrote output() so far
   float weight() const { return done_weight_; }  // the blend's weight of the last complete run (the image output() shows)
   std::vector<float> read() const;  // RGB the denoised radiance, A 1; rows bottom to top
   double last_ms() const { return last_ms_; }  // CPU time of the last run's calls (not waited for)
@@ -122,7 +121,6 @@ class Denoiser {
   std::vector<Pass> plan_;
   size_t next_ = 0;
   int row_ = 0, samples_ = 0;
-  long output_writes_ = 0;
   float weight_ = 0.0f, done_weight_ = 1.0f;  // the run in progress's, the last complete one's
   double estimate_ = -1.0;  // E for the measured weight (start()); < 0: the weight as given
   static constexpr int kChangeBlock = 16;  // pixels per block side of the change pass's sums

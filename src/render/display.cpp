@@ -8,8 +8,7 @@ namespace pt {
 
 Display::Display(ToneMap first) { programs_[int(first)] = Program(fullscreen_vertex(), generate_display(first)); }
 
-void Display::draw(const Texture& mean, ToneMap tonemap, float exposure, int x, int y, GLuint vao, int scale, int w, int h,
-                   const int* clip) const {
+void Display::draw(const Texture& mean, ToneMap tonemap, float exposure, int x, int y, GLuint vao, int scale, int w, int h) const {
   Program& p = programs_[int(tonemap)];
   if (!p.id()) p = Program(fullscreen_vertex(), generate_display(tonemap));
   p.use();
@@ -21,16 +20,10 @@ void Display::draw(const Texture& mean, ToneMap tonemap, float exposure, int x, 
   glViewport(x, y, w > 0 ? w : mean.width(), h > 0 ? h : mean.height());
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
-  if (clip) {
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(x + clip[0], y + clip[1], clip[2] - clip[0], clip[3] - clip[1]);
-  } else {
-    glDisable(GL_SCISSOR_TEST);
-  }
+  glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   PT_GL_CHECK("glDrawArrays (display)");
-  glDisable(GL_SCISSOR_TEST);
 }
 
 std::vector<uint8_t> Display::read(const Texture& mean, ToneMap tonemap, float exposure, GLuint vao, int scale, int w, int h) const {

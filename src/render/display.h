@@ -19,9 +19,7 @@ class Display {
   // mean is a coarse image (render/coarse.h) shown upscaled to a w x h viewport, nearest:
   // each texel as a block of scale x scale pixels (texelFetch, so no float-linear
   // filtering is needed, and no colour bleeds across an object's edge).
-  // `clip` (x0, y0, x1, y1 in the viewport's pixels, null: all of it): only that rectangle.
-  void draw(const Texture& mean, ToneMap tonemap, float exposure, int x, int y, GLuint vao, int scale = 1, int w = 0, int h = 0,
-            const int* clip = nullptr) const;
+  void draw(const Texture& mean, ToneMap tonemap, float exposure, int x, int y, GLuint vao, int scale = 1, int w = 0, int h = 0) const;
   // The same into an 8-bit RGBA image (of the mean's size, or w x h), read back: rows bottom to top.
   std::vector<uint8_t> read(const Texture& mean, ToneMap tonemap, float exposure, GLuint vao, int scale = 1, int w = 0, int h = 0) const;
 

@@ -223,12 +223,6 @@ int Renderer::step() {
   }
   const Accumulator::Tile t = accum_.begin_tile(settings_);
   draw_tile(accum_, t, 1);
-  if (dirty_[2] <= dirty_[0] || dirty_[3] <= dirty_[1]) {  // (display_cached's: none yet)
-    dirty_[0] = t.x0, dirty_[1] = t.y0, dirty_[2] = t.x1, dirty_[3] = t.y1;
-  } else {
-    dirty_[0] = std::min(dirty_[0], t.x0), dirty_[1] = std::min(dirty_[1], t.y0);
-    dirty_[2] = std::max(dirty_[2], t.x1), dirty_[3] = std::max(dirty_[3], t.y1);
-  }
   const int added = accum_.end_tile(t);
   if (added > 0) error_.sweep_done(accum_);
   return added;
@@ -301,30 +295,6 @@ void Renderer::display(int x, int y) const {
   }
   display_.draw(shown(), settings_.tonemap, settings_.exposure, x, y, vao_);
 }
-
-const Framebuffer& Renderer::display_cached() {
-  const int w = width(), h = height(), d = shown_divisor();
-  const Texture& t = d > 1 ? coarse_[ladder().shown(samples())].radiance() : shown();
-  const bool mean = &t == &accum_.radiance();
-  const Shown now{t.id(), settings_.tonemap, settings_.exposure, w, h, d, accum_.epoch(), mean ? 0L : denoiser_.output_writes()};
-  if (cache_.width() != w || cache_.height() != h || !cache_.id()) {
-    cache_ = Texture(w, h, GL_RGBA8, nullptr);
-    cache_fbo_ = Framebuffer(cache_);
-    cached_ = {};
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_.id());
-  if (!(now == cached_)) {  // all of it
-    display_.draw(t, settings_.tonemap, settings_.exposure, 0, 0, vao_, d, w, h);
-  } else if (mean && dirty_[2] > dirty_[0] && dirty_[3] > dirty_[1]) {  // only the tiles drawn since
-    display_.draw(t, settings_.tonemap, settings_.exposure, 0, 0, vao_, 1, w, h, dirty_);
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  cached_ = now;
-  dirty_[0] = dirty_[1] = dirty_[2] = dirty_[3] = 0;
-  return cache_fbo_;
-}
-
-void Renderer::draw_cached(int x, int y) const { display_.draw(cache_, ToneMap::None, 1.0f, x, y, vao_); }
 
 const Texture& Renderer::shown() const {
   if (!settings_.aux || settings_.denoise <= 0.0f || samples() == 0) return accum_.radiance();

@@ -202,18 +202,6 @@ class Renderer {
   ErrorEstimate estimate_error() const { return error_.estimate(accum_); }
   // Tone-mapped 8-bit RGBA as display() shows it (a coarse level upscaled), rows bottom to top.
   std::vector<uint8_t> read_display() const;
-  // The page's present (App::present): what display() shows, tone-mapped into an 8-bit
-  // image of the render's size that the renderer keeps, redrawn only where it changed since
-  // the last call: the tiles of the full-resolution mean drawn since, or all of it when
-  // anything else changed (the texture shown, the tone map or exposure, a restart, the
-  // denoiser's output, a coarse level, the size). Returns its framebuffer, to be blitted.
-  // In SwiftShader a present tone-mapped the whole image each time, about 10 times a
-  // second while a sweep is drawn in tiles: a quarter of the page's GPU time at 960x640
-  // (docs/benchmarks.md); the tiles drawn between two presents are a few rows.
-  const Framebuffer& display_cached();
-  // display_cached()'s image drawn into the bound framebuffer at (x, y), its size: a copy
-  // (the tone map "none" of 8-bit values is exact), cheaper in SwiftShader than a blit.
-  void draw_cached(int x, int y) const;
   using Counters = RenderCounters;  // totals since the last restart, counted in the shader
   Counters counters() const { return accum_.counters(); }
 
@@ -229,19 +217,6 @@ class Renderer {
   GLuint vao_ = 0;        // the fullscreen triangle's (no attributes)
   int vao_made_in_ = gl_objects::generation();
   Display display_;
-  // display_cached()'s image, what it holds, and the mean's pixels drawn since (x0, y0, x1, y1).
-  struct Shown {
-    GLuint texture = 0;
-    ToneMap tonemap = ToneMap::Linear;
-    float exposure = 0.0f;
-    int w = 0, h = 0, divisor = 0, epoch = -1;
-    long writes = -1;
-    bool operator==(const Shown&) const = default;
-  };
-  Texture cache_;
-  Framebuffer cache_fbo_;
-  Shown cached_;
-  int dirty_[4] = {0, 0, 0, 0};
   Accumulator accum_;
   Accumulator coarse_[CoarseLadder::kLevels];  // the ladder's levels, with auxiliaries as accum_
   mutable CoarseLadder ladder_;
