@@ -8,6 +8,7 @@
 #include <string>
 
 #include "render/accumulator.h"
+#include "render/draw_grid.h"
 #include "shadergen/shadergen.h"
 
 namespace pt {
@@ -175,8 +176,11 @@ bool Denoiser::advance(const DenoiseInputs& inputs, GLuint vao, double budget) {
       continue;
     }
     const double per_row = double(width_) * units(p.kind);
-    if (drew && budget < per_row) break;  // at least one row a call, else within the budget
-    const int rows = budget >= per_row * (height_ - row_) ? height_ - row_ : std::clamp(int(budget / per_row), 1, height_ - row_);
+    // At least one slice a call (kBandRowsStep rows, or the rest), else within the budget.
+    if (drew && budget < per_row * std::min(kBandRowsStep, height_ - row_)) break;
+    // Slices on the row-pair grid (render/draw_grid.h): a multiple of kBandRowsStep rows, or the rest.
+    const int wanted = std::max(kBandRowsStep, int(budget / per_row) / kBandRowsStep * kBandRowsStep);
+    const int rows = budget >= per_row * (height_ - row_) ? height_ - row_ : std::min(wanted, height_ - row_);
     pass(p.kind, p.input >= 0 ? &tex_[p.input] : nullptr, p.target >= 0 ? fbo_[p.target] : out_fbo_, in, vao, p.step,
          p.kind == 2 ? weight_ : 0.0f, p.noisy >= 0 ? &tex_[p.noisy] : nullptr, row_, rows);
     budget -= per_row * rows;

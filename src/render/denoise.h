@@ -96,6 +96,7 @@ class Denoiser {
   void start(const DenoiseInputs& in, float weight, double estimate = -1.0);
   bool advance(const DenoiseInputs& in, GLuint vao, double units);
   bool running() const { return next_ < plan_.size(); }
+  int next_row() const { return row_; }  // where the pass in progress goes on (on render/draw_grid.h's grid)
   // A pass's work per pixel in units: prepare, an a-trous iteration (25 taps), finish, and
   // the regression ((2 r + 1)^2 taps: 225 at r = 7, 9 units; measured on llvmpipe at
   // 512x512: 5 iterations 250 ms each, the regression 2.0 s, docs/denoise.md).

@@ -43,6 +43,13 @@ constexpr int kMaxDrawsPerSweep = 1024;
 // How long a floor under the draw size (judge_shrink) holds before shrinking is tried again.
 constexpr double kDrawFloorMs = 5000.0;
 
+// A band's rows for a wanted count: a multiple of kBandRowsStep (render/draw_grid.h), at least
+// kMinBandRows, or the whole image (h) when the count reaches it.
+int align_rows(int rows, int h) {
+  if (rows >= h) return h;
+  return std::min(h, std::max(kMinBandRows, rows / kBandRowsStep * kBandRowsStep));
+}
+
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -64,14 +71,14 @@ void DrawPacer::apply(int image_rows, RenderSettings& s) const {
   } else {
     s.spp_per_pass = 1;
     const int rows = std::clamp(int(budget), std::min(kMinBandRows, image_rows), image_rows);
-    s.band_rows = rows >= image_rows ? 0 : rows;
+    s.band_rows = rows >= image_rows ? 0 : align_rows(rows, image_rows);
   }
 }
 
 // The narrowest tile of a band of kMinBandRows rows.
 int FramePacer::min_band_columns(int w, int h) const {
   const int per_sweep = (double(w) * h) / (double(kMaxDrawsPerSweep) * std::min(kMinBandRows, std::max(1, h))) + 1;
-  return std::min(w, std::max(kMinBandColumns, per_sweep));
+  return std::min(w, std::max(kMinBandColumns, (per_sweep + kTileColumnsStep - 1) / kTileColumnsStep * kTileColumnsStep));
 }
 
 // Scales the draw (band_rows x band_columns) by `factor` in pixels: whole rows down to
@@ -81,10 +88,17 @@ void FramePacer::scale_draw(double factor, int w, int h, RenderSettings& s) {
   const int columns = s.band_columns > 0 && rows <= kMinBandRows ? std::min(s.band_columns, w) : w;
   const double now = double(rows) * columns;
   const double pixels = factor > 1.0 ? std::max(now * factor, now + 1.0) : std::min(now * factor, now - 1.0);
-  const int new_rows = std::clamp(int(pixels / w), std::min(kMinBandRows, h), h);
-  const int new_columns = new_rows > kMinBandRows || pixels >= double(kMinBandRows) * w
-                              ? w
-                              : std::clamp(int(pixels / kMinBandRows), min_band_columns(w, h), w);
+  // Whole rows on the row-pair grid (align_rows); a growth or shrink that the grid would
+  // round away takes one step of it.
+  int new_rows = align_rows(int(pixels / w), h);
+  if (factor > 1.0 && new_rows <= rows && columns >= w && rows < h) new_rows = align_rows(rows + kBandRowsStep, h);
+  if (factor < 1.0 && new_rows >= rows && rows > kMinBandRows) new_rows = align_rows(rows - 1, h);
+  int new_columns = w;
+  if (new_rows <= kMinBandRows && pixels < double(kMinBandRows) * w) {  // a tile of the thinnest band
+    new_columns = std::clamp(int(pixels / kMinBandRows) / kTileColumnsStep * kTileColumnsStep, min_band_columns(w, h), w);
+    if (factor > 1.0 && new_columns <= columns && columns < w) new_columns = std::min(w, columns + kTileColumnsStep);
+    if (factor < 1.0 && new_columns >= columns) new_columns = std::max(min_band_columns(w, h), columns - kTileColumnsStep);
+  }
   s.band_rows = new_rows >= h ? 0 : new_rows;
   s.band_columns = new_columns >= w ? 0 : new_columns;
   judged_ = -1;  // the next interval is of a frame queued before the change: not counted

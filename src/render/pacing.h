@@ -9,6 +9,7 @@
 //   displayed frames says how long the GPU took; the draw grows and shrinks with it.
 #pragma once
 
+#include "render/draw_grid.h"
 #include "render/renderer.h"
 
 namespace pt {

@@ -41,7 +41,7 @@ TEST_CASE("DrawPacer sizes the next draw from the measured cost per row-sample",
   CHECK(s.band_rows == 20);
   dear.record(1.0, 100, 1);  // a cheap draw after it: the dear cost fades by 0.9 a draw
   dear.apply(100, s);
-  CHECK(s.band_rows == 22);
+  CHECK(s.band_rows == 20);  // 22 rows' budget, on the row-pair grid (render/draw_grid.h)
   DrawPacer slowest(40.0);
   slowest.record(1000.0, 1, 1);
   slowest.apply(100, s);
@@ -99,7 +99,7 @@ TEST_CASE("FramePacer follows the interval between frames", "[gpu][pacing]") {
   CHECK(s.band_columns == 0);
   // The frame queued before the change is not counted; then two in a row.
   CHECK(until_change(p, r, s, 100.0, now) == 3);
-  CHECK(s.band_rows == 6);
+  CHECK(s.band_rows == 4);  // 0.22 x 28 = 6, on the grid
   frames(p, r, s, 60, 100.0, now);
   CHECK(s.band_rows == 4);  // the floor: 4 rows of the narrowest tile
   CHECK(s.band_columns == 128);
@@ -130,7 +130,7 @@ TEST_CASE_METHOD(SlowFrames, "FramePacer judges the mean interval of six frames,
   // stayed at 16 rows at 28.7 UI frames/s); the mean says slow.
   s.band_rows = 32;
   for (int i = 0; i < 3; ++i) frames(p, r, s, 1, 62.0, now), frames(p, r, s, 1, 10.0, now);
-  CHECK(s.band_rows == 22);  // 0.7 x 32 after the first six
+  CHECK(s.band_rows == 20);  // 0.7 x 32 after the first six, on the grid
   int largest = 0;
   for (int i = 0; i < 50; ++i) {
     frames(p, r, s, 1, 62.0, now), frames(p, r, s, 1, 10.0, now);
@@ -152,7 +152,7 @@ TEST_CASE_METHOD(SlowFrames, "FramePacer shrinks below 30 frames/s and leaves tw
   // 29.4 frames/s at whole-row draws when the threshold was 34 ms).
   s.band_rows = 32;
   frames(p, r, s, 6, 33.9, now);
-  CHECK(s.band_rows == 22);
+  CHECK(s.band_rows == 20);
   // Frames of two 60 Hz intervals (33.33 ms: 30 frames/s) keep their draw.
   RenderSettings t;
   t.band_rows = 32;
@@ -165,7 +165,7 @@ TEST_CASE_METHOD(SlowFrames, "FramePacer shrinks below 30 frames/s and leaves tw
 
 TEST_CASE_METHOD(SlowFrames, "FramePacer undoes a shrink that leaves frames as slow, for 5 s", "[gpu][pacing]") {
   CHECK(until_change(p, r, s, 40.0, now) == 6);  // one window of slow frames (a few slow ones may be hiccups)
-  CHECK(s.band_rows == 89);  // the draw shrinks by 0.7
+  CHECK(s.band_rows == 88);  // the draw shrinks by 0.7 (89.6 rows), on the grid
   CHECK(until_change(p, r, s, 40.0, now) == 7);  // the frame queued before the change, then a window
   CHECK(s.band_rows == 4);  // as slow as before: the smallest draw is measured (the probe)
   CHECK(s.band_columns == 128);
@@ -178,13 +178,13 @@ TEST_CASE_METHOD(SlowFrames, "FramePacer undoes a shrink that leaves frames as s
     REQUIRE(s.band_rows == 0);
   }
   for (int waited = 0; s.band_rows == 0 && waited < 20; ++waited) frames(p, r, s, 1, 40.0, now);
-  CHECK(s.band_rows == 89);  // the floor expired: tried again
+  CHECK(s.band_rows == 88);  // the floor expired: tried again
   CHECK(now - floor_from > 5000.0);
 }
 
 TEST_CASE_METHOD(SlowFrames, "FramePacer keeps a probe's small draw when frames there are fast", "[gpu][pacing]") {
   until_change(p, r, s, 40.0, now);
-  CHECK(s.band_rows == 89);  // slow: the draw shrinks by 0.7
+  CHECK(s.band_rows == 88);  // slow: the draw shrinks by 0.7
   until_change(p, r, s, 40.0, now);
   CHECK(s.band_rows == 4);  // as slow: the probe
   CHECK(until_change(p, r, s, 25.0, now) == 7);
@@ -195,6 +195,38 @@ TEST_CASE_METHOD(SlowFrames, "FramePacer keeps a probe's small draw when frames 
   frames(p, r, s, 40, 36.0, now);  // as slow there, measured: back to the size before, for 5 s
   CHECK(s.band_rows == 4);
   CHECK(s.band_columns == 160);
+}
+
+// Every draw on the row-pair grid (render/draw_grid.h): through growth, shrinks, the
+// probe and its floor, fed intervals that swing between fast and slow, each band's rows are
+// a multiple of kBandRowsStep (or the whole image) and each tile's columns a multiple of
+// kTileColumnsStep (or the whole width), at sizes whose pixel counts are not multiples of
+// either (962 x 541, 300 x 203).
+TEST_CASE("FramePacer keeps every draw on the row-pair grid", "[gpu][pacing]") {
+  test_gl();
+  for (const auto& [w, h] : {std::pair{962, 541}, std::pair{300, 203}}) {
+    Renderer r;
+    r.resize(w, h);
+    RenderSettings s;
+    s.band_rows = FramePacer::kFirstBandRows;
+    FramePacer p;
+    double now = 0.0, samples = 0.0;
+    p.frame(r, s, 0.0, now, false, samples);
+    unsigned seed = 7;
+    int sizes = 0, last = -1;
+    for (int i = 0; i < 4000; ++i) {
+      seed = seed * 1103515245u + 12345u;
+      const double dt = 5.0 + double(seed >> 16 & 1023) / 1023.0 * (i % 400 < 200 ? 40.0 : 90.0);
+      frames(p, r, s, 1, dt, now);
+      INFO(w << "x" << h << " frame " << i << ": rows " << s.band_rows << ", columns " << s.band_columns);
+      REQUIRE((s.band_rows == 0 || s.band_rows % kBandRowsStep == 0));
+      REQUIRE((s.band_columns == 0 || s.band_columns % kTileColumnsStep == 0));
+      REQUIRE((s.band_rows == 0 || s.band_rows >= kMinBandRows));
+      const int size = s.band_rows * 100000 + s.band_columns;
+      if (size != last) ++sizes, last = size;
+    }
+    CHECK(sizes > 20);  // the intervals moved the draw through many sizes
+  }
 }
 
 TEST_CASE("FramePacer counts each draw's samples in fractions of the image", "[gpu][pacing]") {
