@@ -178,9 +178,10 @@ bool Denoiser::advance(const DenoiseInputs& inputs, GLuint vao, double budget) {
     const double per_row = double(width_) * units(p.kind);
     // At least one slice a call (kBandRowsStep rows, or the rest), else within the budget.
     if (drew && budget < per_row * std::min(kBandRowsStep, height_ - row_)) break;
-    // Slices on the row-pair grid (render/draw_grid.h): a multiple of kBandRowsStep rows, or the rest.
-    const int wanted = std::max(kBandRowsStep, int(budget / per_row) / kBandRowsStep * kBandRowsStep);
-    const int rows = budget >= per_row * (height_ - row_) ? height_ - row_ : std::min(wanted, height_ - row_);
+    // Slices on the row-pair grid (render/draw_grid.h): a multiple of kBandRowsStep rows, or
+    // the rest (also when the budget is unlimited, run(): no int of an infinite quotient).
+    int rows = height_ - row_;
+    if (budget < per_row * rows) rows = std::min(rows, std::max(kBandRowsStep, int(budget / per_row) / kBandRowsStep * kBandRowsStep));
     pass(p.kind, p.input >= 0 ? &tex_[p.input] : nullptr, p.target >= 0 ? fbo_[p.target] : out_fbo_, in, vao, p.step,
          p.kind == 2 ? weight_ : 0.0f, p.noisy >= 0 ? &tex_[p.noisy] : nullptr, row_, rows);
     budget -= per_row * rows;
