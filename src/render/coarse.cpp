@@ -11,14 +11,21 @@ void CoarseLadder::draw_size(int band_rows, int band_columns, int full_w, int fu
   const double r = band_rows > 0 ? std::min(band_rows, full_h) : full_h;
   const double c = band_columns > 0 ? std::min(band_columns, full_w) : full_w;
   const double pixels = r * c;
-  const int whole_rows = int(pixels / std::max(1, w));
-  if (whole_rows >= std::min(kMinBandRows, h)) {
-    rows = whole_rows >= h ? 0 : whole_rows;
+  const int fit = int(pixels / std::max(1, w));  // whole rows of the level in the pacer's pixels
+  if (fit >= h) {
+    rows = columns = 0;
+    return;
+  }
+  // On the row-pair grid (render/draw_grid.h), as the pacer's own draws.
+  const int whole_rows = grid_floor(fit, kBandRowsStep);
+  if (whole_rows >= kMinBandRows) {
+    rows = whole_rows;
     columns = 0;
     return;
   }
-  rows = std::min(kMinBandRows, h);
-  const int cols = std::max(1, int(pixels / rows));
+  const int band = std::min(kMinBandRows, h);
+  rows = band >= h ? 0 : band;
+  const int cols = std::max(kTileColumnsStep, grid_floor(int(pixels / band), kTileColumnsStep));
   columns = cols >= w ? 0 : cols;
 }
 

@@ -38,7 +38,8 @@ class CoarseLadder {
   // A coarse draw of about as many pixels as the pacer's full-resolution draw (band_rows
   // x band_columns of a w-pixel-wide image, 0 = all): the pacer's feedback (frame times)
   // stays true of the draws it sized. A band of whole rows of the level when that is at
-  // least kMinBandRows rows (or the level), else kMinBandRows rows and as many columns.
+  // least kMinBandRows rows (or the level), else kMinBandRows rows and as many columns;
+  // rows and columns on the row-pair grid (render/draw_grid.h) unless the whole level.
   // Sets rows and columns for the level's w x h image (0 = all).
   static void draw_size(int band_rows, int band_columns, int full_w, int full_h, int w, int h, int& rows, int& columns);
 

@@ -70,14 +70,37 @@ TEST_CASE("CoarseLadder::draw_size keeps the pacer's pixels per draw", "[coarse]
   CoarseLadder::draw_size(kMinBandRows, 128, 1280, 800, 640, 400, rows, columns);
   CHECK(rows == kMinBandRows);
   CHECK(columns == 128);
-  // ... and whole rows of a level narrower than 128 pixels (4 rows of 100 < 512).
+  // ... and whole rows of a level narrower than 128 pixels (5 rows of 100 fit in 512; the
+  // row-pair grid makes them 4).
   CoarseLadder::draw_size(kMinBandRows, 128, 800, 1280, 100, 160, rows, columns);
-  CHECK(rows == 5);
+  CHECK(rows == 4);
   CHECK(columns == 0);
   // A level thinner than kMinBandRows: the whole level.
   CoarseLadder::draw_size(kMinBandRows, 128, 1280, 16, 160, 2, rows, columns);
   CHECK(rows == 0);
   CHECK(columns == 0);
+}
+
+TEST_CASE("CoarseLadder::draw_size keeps every coarse draw on the row-pair grid", "[coarse][pacing]") {
+  // Every level of odd-sized images, for every draw the pacer can ask for: a band's rows a
+  // multiple of kBandRowsStep and a tile's columns a multiple of kTileColumnsStep (or the
+  // whole level), as the pacer's own draws (render/draw_grid.h).
+  for (const auto& [fw, fh] : {std::pair{962, 541}, std::pair{300, 203}, std::pair{1280, 800}})
+    for (int level = 0; level < CoarseLadder::kLevels; ++level) {
+      const int w = CoarseLadder::level_size(fw, level), h = CoarseLadder::level_size(fh, level);
+      for (int band_rows = kMinBandRows; band_rows <= fh + kBandRowsStep; band_rows += kBandRowsStep)
+        for (int band_columns : {0, 128, 130, 302, 640}) {
+          if (band_columns > 0 && band_rows > kMinBandRows) continue;  // tiles only of the thinnest band
+          int rows = -1, columns = -1;
+          CoarseLadder::draw_size(band_rows, band_columns, fw, fh, w, h, rows, columns);
+          INFO(fw << "x" << fh << " level " << level << " (" << w << "x" << h << "), pacer " << band_rows << " x " << band_columns
+                  << " -> " << rows << " x " << columns);
+          REQUIRE((rows == 0 || rows % kBandRowsStep == 0));
+          REQUIRE((columns == 0 || columns % kTileColumnsStep == 0));
+          REQUIRE((rows == 0 || rows < h));
+          REQUIRE((columns == 0 || columns < w));
+        }
+    }
 }
 
 namespace {

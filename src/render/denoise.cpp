@@ -181,7 +181,7 @@ bool Denoiser::advance(const DenoiseInputs& inputs, GLuint vao, double budget) {
     // Slices on the row-pair grid (render/draw_grid.h): a multiple of kBandRowsStep rows, or
     // the rest (also when the budget is unlimited, run(): no int of an infinite quotient).
     int rows = height_ - row_;
-    if (budget < per_row * rows) rows = std::min(rows, std::max(kBandRowsStep, int(budget / per_row) / kBandRowsStep * kBandRowsStep));
+    if (budget < per_row * rows) rows = std::min(rows, std::max(kBandRowsStep, grid_floor(int(budget / per_row), kBandRowsStep)));
     pass(p.kind, p.input >= 0 ? &tex_[p.input] : nullptr, p.target >= 0 ? fbo_[p.target] : out_fbo_, in, vao, p.step,
          p.kind == 2 ? weight_ : 0.0f, p.noisy >= 0 ? &tex_[p.noisy] : nullptr, row_, rows);
     budget -= per_row * rows;

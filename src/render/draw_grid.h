@@ -15,4 +15,9 @@ namespace pt {
 inline constexpr int kBandRowsStep = 4;
 inline constexpr int kTileColumnsStep = 2;
 
+// n rounded down (grid_floor) or up (grid_ceil) to a multiple of `step`, for n >= 0.
+constexpr int grid_floor(int n, int step) { return n / step * step; }
+constexpr int grid_ceil(int n, int step) { return (n + step - 1) / step * step; }
+static_assert(grid_floor(7, kBandRowsStep) == 4 && grid_ceil(5, kTileColumnsStep) == 6 && grid_ceil(4, kBandRowsStep) == 4);
+
 }  // namespace pt

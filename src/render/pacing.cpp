@@ -47,7 +47,7 @@ constexpr double kDrawFloorMs = 5000.0;
 // kMinBandRows, or the whole image (h) when the count reaches it.
 int align_rows(int rows, int h) {
   if (rows >= h) return h;
-  return std::min(h, std::max(kMinBandRows, rows / kBandRowsStep * kBandRowsStep));
+  return std::min(h, std::max(kMinBandRows, grid_floor(rows, kBandRowsStep)));
 }
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -78,7 +78,7 @@ void DrawPacer::apply(int image_rows, RenderSettings& s) const {
 // The narrowest tile of a band of kMinBandRows rows.
 int FramePacer::min_band_columns(int w, int h) const {
   const int per_sweep = (double(w) * h) / (double(kMaxDrawsPerSweep) * std::min(kMinBandRows, std::max(1, h))) + 1;
-  return std::min(w, std::max(kMinBandColumns, (per_sweep + kTileColumnsStep - 1) / kTileColumnsStep * kTileColumnsStep));
+  return std::min(w, std::max(kMinBandColumns, grid_ceil(per_sweep, kTileColumnsStep)));
 }
 
 // Scales the draw (band_rows x band_columns) by `factor` in pixels: whole rows down to
@@ -95,7 +95,7 @@ void FramePacer::scale_draw(double factor, int w, int h, RenderSettings& s) {
   if (factor < 1.0 && new_rows >= rows && rows > kMinBandRows) new_rows = align_rows(rows - 1, h);
   int new_columns = w;
   if (new_rows <= kMinBandRows && pixels < double(kMinBandRows) * w) {  // a tile of the thinnest band
-    new_columns = std::clamp(int(pixels / kMinBandRows) / kTileColumnsStep * kTileColumnsStep, min_band_columns(w, h), w);
+    new_columns = std::clamp(grid_floor(int(pixels / kMinBandRows), kTileColumnsStep), min_band_columns(w, h), w);
     if (factor > 1.0 && new_columns <= columns && columns < w) new_columns = std::min(w, columns + kTileColumnsStep);
     if (factor < 1.0 && new_columns >= columns) new_columns = std::max(min_band_columns(w, h), columns - kTileColumnsStep);
   }
