@@ -41,6 +41,8 @@ struct AppOptions {
   bool coarse = true;                                    // the coarse first image after a restart (render/coarse.h)
   Accel accel = Accel::Auto;                             // the traversal (accel/accel_choice.h; the URL's accel=)
   bool gltf_ms = true;                                   // the glTF BSDF's energy compensation (the URL's gltfms=off: the spec's model)
+  std::optional<bool> adaptive;                          // adaptive sampling (the URL's adaptive=on|off); unset: App::kAdaptiveByDefault
+  std::optional<bool> denoise;                           // the denoiser on the shown image (the URL's denoise=on|off); unset: on
   // The raw pass, a measurement (the URL's raw=ROWS, tools/page_cost.mjs): one draw of this
   // many whole rows per frame, no pacing, no panel, the image shown every kRawShowMs; 0: the page.
   int raw_rows = 0;
@@ -73,6 +75,7 @@ class App {
   void present(int fb_w, int fb_h, double now_ms);
   static constexpr double kRefreshMs = 250.0, kPartialMs = 100.0, kRawShowMs = 1000.0;
   static constexpr double kDenoiseUnits = 16.0;  // the denoiser's work per pixel drawn (render_passes)
+  static constexpr bool kAdaptiveByDefault = true;  // the panel's "adaptive" (App::App; the URL's adaptive=off)
 
   // Test hooks.
   std::string stats_json() const;                        // see web/index.html: ptStats()

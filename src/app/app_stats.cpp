@@ -160,6 +160,7 @@ std::string App::error_fields() const {
   j += ",\"targetReachedAt\":" + std::to_string(target_stop_at_);
   j += ",\"denoise\":" + json_number(denoise_ ? denoise_blend() : 0.0);
   j += ",\"denoisedSamples\":" + std::to_string(renderer_->denoised_samples());  // of the filtered image shown; 0: raw
+  j += std::string(",\"adaptive\":") + (settings_.adaptive ? "true" : "false");
   // The coarse first image (render/coarse.h): the divisor of the image shown (1: full
   // resolution) and the coarse levels complete since the restart.
   j += ",\"epoch\":" + std::to_string(renderer_->accumulator().epoch());  // counts restarts

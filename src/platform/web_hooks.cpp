@@ -85,6 +85,8 @@ AppOptions page_options(int argc, char** argv) {
     if (key == "--raw") o.raw_rows = std::max(0, std::atoi(value.c_str()));
     if (key == "--accel") accel_from_name(value.c_str(), &o.accel);  // auto, bvh or flat; else auto stays
     if (key == "--gltfms") o.gltf_ms = value != "off";  // the glTF BSDF's energy compensation (default on)
+    if (key == "--adaptive" && (value == "on" || value == "off")) o.adaptive = value == "on";
+    if (key == "--denoise" && (value == "on" || value == "off")) o.denoise = value == "on";
     if (key == "--target") o.target_relmse = std::max(0.0f, std::strtof(value.c_str(), nullptr));
     ToneMap tm;
     if (key == "--tonemap" && tonemap_from_name(value.c_str(), &tm)) o.tonemap = tm;

@@ -153,6 +153,7 @@ async function denoiser(context, url) {
   const same = (a, b) => a.length === b.length && a.every((v, i) => v === b[i]);
   console.log(`# denoiser toggle at 8 spp (128x128): ${changed} of ${pixels} displayed pixels change; blend weight ${on.s.denoise.toFixed(3)}`);
   check("the denoiser is on at first, and off after the toggle", on.s.denoise > 0 && off.s.denoise === 0, `${on.s.denoise}, ${off.s.denoise}`);
+  check("adaptive sampling is on by default", on.s.adaptive === true, String(on.s.adaptive));
   check("toggling the denoiser changes the image shown", changed > pixels / 4, `${changed} of ${pixels} pixels changed`);
   check("toggling it back shows the same denoised image again", same(on.display, again.display), "the displayed bytes differ");
   check("the accumulation is untouched by the toggle (its bytes, samples and restarts)",
@@ -161,6 +162,16 @@ async function denoiser(context, url) {
         JSON.stringify({ samples: [on.s.samples, off.s.samples, again.s.samples], epoch: [on.s.epoch, off.s.epoch, again.s.epoch],
                          radianceSame: [same(on.radiance, off.radiance), same(on.radiance, again.radiance)] }));
   check("no console errors (denoiser toggle)", errors.length === 0, errors.join("; "));
+  // The address sets both toggles (a link that reproduces a measurement: tools/peers).
+  const linked = await openPage(context, `${url}?scene=${scene}&size=128x128&limit=4&denoise=off&adaptive=off`, errors);
+  await until(linked, () => window.ptLoadStatus().samples >= 4);
+  const l = await status(linked);
+  await sleep(700);  // the address is rewritten every 500 ms
+  const search = await linked.evaluate(() => location.search);
+  check("the address's denoise=off and adaptive=off set the toggles, and stay in it", l.denoise === 0 && l.adaptive === false &&
+        /[?&]denoise=off/.test(search) && /[?&]adaptive=off/.test(search), `denoise ${l.denoise}, adaptive ${l.adaptive}, ${search}`);
+  await linked.close();
+  check("no console errors (denoiser and adaptive from the address)", errors.length === 0, errors.join("; "));
   await page.close();
 
   // Its cost at 512x512 (issue 14): ptTimeDenoise runs the filter on the current image, each
