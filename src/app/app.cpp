@@ -29,8 +29,8 @@ App::App(AppOptions options) : options_(std::move(options)), renderer_(std::make
   settings_.gltf_ms = options_.gltf_ms;
   // Adaptive sampling on by default in the page (issue 14's rule held: relMSE at equal time
   // 1.5x lower on two scenes and worse on none, H100 and llvmpipe; the page's scene2 in
-  // SwiftShader 1.17-1.25x lower at 120 s: docs/benchmarks.md). The CLI keeps it off
-  // (--adaptive on), so that its benchmarks and byte comparisons stay uniform.
+  // SwiftShader 1.17-1.25x lower at 120 s: docs/benchmarks.md). The CLI keeps it off unless
+  // asked (--adaptive on), so that its benchmarks and byte comparisons stay uniform.
   // Set before the first load, whose program depends on it.
   settings_.adaptive = options_.adaptive.value_or(kAdaptiveByDefault);
   settings_.band_rows = FramePacer::kFirstBandRows;

@@ -71,6 +71,9 @@ std::string App::view_query() const {
     std::snprintf(t, sizeof t, "%.4g", double(target_relmse_));
     q += std::string("&target=") + t;
   }
+  // The panel's two toggles, where they differ from the defaults (the URL's adaptive=, denoise=).
+  if (settings_.adaptive != kAdaptiveByDefault) q += std::string("&adaptive=") + (settings_.adaptive ? "on" : "off");
+  if (!denoise_) q += "&denoise=off";
   return q;
 }
 

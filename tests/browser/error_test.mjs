@@ -170,6 +170,11 @@ async function denoiser(context, url) {
   const search = await linked.evaluate(() => location.search);
   check("the address's denoise=off and adaptive=off set the toggles, and stay in it", l.denoise === 0 && l.adaptive === false &&
         /[?&]denoise=off/.test(search) && /[?&]adaptive=off/.test(search), `denoise ${l.denoise}, adaptive ${l.adaptive}, ${search}`);
+  // The address follows the toggles (the view), not the parameters it was opened with.
+  await linked.evaluate(() => window.ptSetDenoise(true));
+  await sleep(700);
+  const after = await linked.evaluate(() => location.search);
+  check("the address drops denoise=off once the denoiser is on again", !/denoise=/.test(after) && /[?&]adaptive=off/.test(after), after);
   await linked.close();
   check("no console errors (denoiser and adaptive from the address)", errors.length === 0, errors.join("; "));
   await page.close();
