@@ -74,7 +74,7 @@ const char* kRays =
 
 std::vector<glm::vec4> run(const Scene& scene, const PackedScene& p, const std::string& body, const std::vector<glm::vec4>& in, int mode) {
   GlslKernel k(std::string(kRays) + body, Features::of(scene));
-  k.bind_scene(p);
+  k.bind_scene(scene, p);
   k.program().set("u_num_prims", p.prims.count());
   k.program().set("u_mode", mode);
   return k.run(in);

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "accel_run.h"
 #include "gl_context.h"
@@ -21,6 +23,8 @@
 using namespace pt;
 
 namespace {
+
+bool contains(const std::string& s, const std::string& what) { return s.find(what) != std::string::npos; }
 
 AccelRun run_accel(const Scene& scene, Accel accel, bool compute) {
   RenderSettings st;
@@ -49,8 +53,9 @@ Scene room(int extra) {
 
 TEST_CASE("flat traversal: the same image and ray count as the BVH's", "[gpu][accel]") {
   // Planes (unbounded), boxes and spheres, meshes and instances, motion blur (node_mover),
-  // glTF alpha MASK and BLEND (hit cuts: hit_present decides during the traversal), and a
-  // room of 160 primitives (the flat loop forced where auto picks the BVH).
+  // glTF alpha MASK and BLEND (hit cuts: hit_present decides during the traversal), and
+  // rooms of 110 and 160 primitives (the flat loop forced where auto picks the BVH: kind by
+  // kind, and above kFlatOrderMax the one loop).
   struct Case {
     const char* name;
     bool compute;
@@ -58,7 +63,8 @@ TEST_CASE("flat traversal: the same image and ray count as the BVH's", "[gpu][ac
   const Case cases[] = {{"scenes/reference/scene0.xml", false},   {"scenes/reference/scene2.xml", false},
                         {"scenes/reference/scene2.xml", true},    {"scenes/cornell-box.xml", false},
                         {"scenes/mesh-cube.xml", true},           {"scenes/seed/06-logo.xml", false},
-                        {"room", false},                          {"scenes/analytic/closed-room.xml", false},
+                        {"room", false},                          {"room-100", false},
+                        {"scenes/analytic/closed-room.xml", false},
                         {"alpha", false}};
   for (const Case& c : cases) {
     const std::string name = c.name;
@@ -67,7 +73,9 @@ TEST_CASE("flat traversal: the same image and ray count as the BVH's", "[gpu][ac
                                           "<Mesh src=\"../assets/gltf/test-blend.gltf\" position=\"0.3 0.2 -0.5\"/><Sphere center=\"0 0 -2\" radius=\"1\">"
                                           "<Emit><Absorb intensity=\"2\" color=\"1 1 1\"/></Emit></Sphere></Objects></SceneLevel>",
                                           repo_path("scenes/alpha-test.xml"))
-                        : name == "room" ? room(150) : load_scene_file(repo_path(name));
+                        : name == "room"     ? room(150)
+                        : name == "room-100" ? room(100)
+                                             : load_scene_file(repo_path(name));
     const AccelRun bvh = run_accel(scene, Accel::Bvh, c.compute);
     const AccelRun flat = run_accel(scene, Accel::Flat, c.compute);
     REQUIRE_FALSE(bvh.flat);
@@ -123,6 +131,38 @@ TEST_CASE("flat traversal: the program has no node record, node count nor stack"
     GlslKernel k("vec4 kernel(vec4 x, int i) { return vec4(scene_intersect(Ray(x.xyz, vec3(0.0, 0.0, 1.0))).t); }", f);
     CHECK((k.program().loc("u_num_nodes") == -1) == flat);
     CHECK((k.program().loc("u_num_unbounded") == -1) == flat);
-    if (flat) CHECK(k.program().loc("u_num_prims") != -1);
+    // scene2 (10 primitives) loops kind by kind: its order is in uniforms instead of a count.
+    if (flat) CHECK(k.program().loc("u_flat_order") != -1);
+    if (flat) CHECK(k.program().loc("u_num_prims") == -1);
   }
+}
+
+// Kind by kind, each loop runs its own kind's test and nothing dispatches on a kind: a
+// software rasteriser (SwiftShader, the page's) runs every side of a branch, so the one
+// loop's dispatch ran every kind's test for every primitive. Planes first, as in leaf order.
+TEST_CASE("flat traversal: kind by kind, each loop with one kind's test", "[shadergen][accel]") {
+  const Scene scene = load_scene_text(
+      "<SceneLevel><Camera position=\"0 0 3\"/><Objects><Sphere center=\"1 0 0\" radius=\"0.4\"><Diffuse/></Sphere>"
+      "<Plane normal=\"0 1 0\" d=\"-1\"><Diffuse/></Plane><Box min=\"-1 -1 -1\" max=\"0 0 0\"><Diffuse/></Box>"
+      "<Triangle v0=\"0 0 0\" v1=\"1 0 0\" v2=\"0 1 0\"><Diffuse/></Triangle></Objects></SceneLevel>",
+      "kinds.xml");
+  Features f = Features::of(scene);
+  REQUIRE(f.flat_order);
+  f.flat = true;
+  const std::string text = generate_integrator(f).text;
+  const size_t at = text.find("void flat_groups(Ray r, RayPre pre, bool any_hit, int skip, inout Hit h) {");
+  REQUIRE(at != std::string::npos);
+  const std::string body = text.substr(at, text.find("\n}\n", at) - at);
+  std::vector<std::string> loops;
+  for (size_t i = body.find("  for ("); i != std::string::npos; i = body.find("  for (", i + 1))
+    loops.push_back(body.substr(i, body.find("\n  }", i) - i));
+  REQUIRE(loops.size() == 4);
+  const char* tests[] = {"intersect_plane(", "intersect_sphere(", "intersect_box(", "bvh_triangle("};
+  for (size_t l = 0; l < loops.size(); ++l)
+    for (size_t t = 0; t < 4; ++t) CHECK(contains(loops[l], tests[t]) == (l == t));
+  CHECK_FALSE(contains(body, "kind =="));
+  CHECK_FALSE(contains(body, "intersect_analytic("));
+  // Above kFlatOrderMax primitives the one loop stays.
+  f.flat_order = false;
+  CHECK_FALSE(contains(generate_integrator(f).text, "void flat_groups(Ray r, RayPre pre, bool any_hit, int skip, inout Hit h) {"));
 }

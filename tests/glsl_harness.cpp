@@ -104,7 +104,7 @@ GlslKernel::GlslKernel(const std::string& body, const Features& f) {
 
 void GlslKernel::bind(const char* sampler, const Texture& t) { textures_.emplace_back(sampler, &t); }
 
-void GlslKernel::bind_scene(const PackedScene& p) {
+void GlslKernel::bind_scene(const Scene& scene, const PackedScene& p) {
   auto add = [&](const char* sampler, const RecordBuffer& b) {
     const std::vector<float> t = b.texels();
     owned_.push_back(std::make_unique<Texture>(kDataWidth, b.rows(), GL_RGBA32F, t.data()));
@@ -121,6 +121,7 @@ void GlslKernel::bind_scene(const PackedScene& p) {
   program_.set("u_num_prims", p.prims.count());
   program_.set("u_num_unbounded", p.unbounded);
   program_.set("u_num_nodes", p.nodes.count());
+  bind_flat_order(program_, flat_order(scene, p));  // a flat program kind by kind
 }
 
 std::vector<glm::vec4> GlslKernel::run(const std::vector<glm::vec4>& inputs) {

@@ -13,6 +13,7 @@
 #include "gpu/program.h"
 #include "gpu/texture.h"
 #include "render/packing.h"
+#include "render/scene_textures.h"
 #include "render/uniform_tables.h"
 #include <memory>
 #include "shadergen/shadergen.h"
@@ -48,7 +49,7 @@ class GlslKernel {
   void bind(const char* sampler, const Texture& t);
   // Uploads a packed scene (shapes, materials, lights, BVH nodes, primitives, mesh
   // vertices) and binds it with its counts, as the renderer does.
-  void bind_scene(const PackedScene& p);
+  void bind_scene(const Scene& scene, const PackedScene& p);
 
  private:
   Program program_;

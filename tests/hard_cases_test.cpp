@@ -288,7 +288,7 @@ std::vector<glm::vec4> first_bounce_nee(const Scene& s, int w, int h, int spp) {
       "  vec3 L = f * ls.radiance * wp;\n"
       "  return vec4(max3(L), ls.pdf, wp, pdf_b);\n}\n",
       Features::of(s));
-  k.bind_scene(pack_scene(s));
+  k.bind_scene(s, pack_scene(s));
   k.program().set("u_cam_pos", cb.position);
   k.program().set("u_cam_fwd", cb.forward);
   k.program().set("u_cam_right", cb.right);

@@ -229,7 +229,7 @@ TEST_CASE("motion: every kind's GLSL at time t hits what its CPU twin moved to t
         "  Hit h = scene_intersect(Ray(x.xyz, d));\n"
         "  return vec4(float(h.id), h.t, h.id >= 0 ? dot(h.p - x.xyz, d) : 0.0, 0.0);\n}\n",
         f);
-    k.bind_scene(packed);
+    k.bind_scene(s, packed);
     const Texture dir_tex(4096, 1, GL_RGBA32F, &dirs[0].x);
     k.bind("u_dirs", dir_tex);
     const std::vector<glm::vec4> gpu = k.run(origins);

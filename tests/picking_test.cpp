@@ -108,7 +108,7 @@ TEST_CASE("pick agrees with the shader's scene_intersect on every pixel", "[gpu]
         "  Hit h = scene_intersect(Ray(u_cam_pos, normalize(u_cam_fwd + ndc.x * u_cam_right + ndc.y * u_cam_up)));\n"
         "  return vec4(float(h.id), h.t, 0.0, 0.0);\n}\n",
         Features::of(s));
-    k.bind_scene(pack_scene(s));
+    k.bind_scene(s, pack_scene(s));
     k.program().set("u_cam_pos", cb.position);
     k.program().set("u_cam_fwd", cb.forward);
     k.program().set("u_cam_right", cb.right);

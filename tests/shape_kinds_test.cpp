@@ -95,7 +95,7 @@ TEST_CASE("every shape kind's CPU twin agrees with its GLSL on random and grazin
         "  Hit h = scene_intersect(Ray(x.xyz, d));\n"
         "  return vec4(float(h.id), h.t, 0.0, 0.0);\n}\n",
         f);
-    k.bind_scene(pack_scene(s));
+    k.bind_scene(s, pack_scene(s));
     std::vector<glm::vec4> origins, dirs(size_t(4096) * ((rays.size() + 4095) / 4096), glm::vec4(0.0f));
     for (size_t i = 0; i < rays.size(); ++i) origins.emplace_back(rays[i].o, 0.0f), dirs[i] = glm::vec4(rays[i].d, 0.0f);
     const Texture dir_tex(4096, int(dirs.size() / 4096), GL_RGBA32F, &dirs[0].x);

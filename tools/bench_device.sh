@@ -2,10 +2,10 @@
 # Speed against error on the lent GPU machine (NVIDIA, headless EGL). Build natively
 # here (cmake --build --preset native), then run there with build/native/pathtracer and
 # .gl/ (libglvnd + tinyxml2 .debs, see docs/benchmarks.md) carried along:
-#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|adaptivebound|fragment|denoise|denoiseeval|calibration
+#   bash tools/bench_device.sh cornell|scenes|speed|bvh|kernels|variants|wave2|accel|gltfms|adaptive|adaptivebound|fragment|flatkinds|denoise|denoiseeval|calibration
 # Results (CSV, SVG, PNG, log) go to $OUT/results-PART.tar.gz.
 set -uo pipefail
-part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive, adaptivebound, fragment, denoise, denoiseeval or calibration}"
+part="${1:?part: cornell, scenes, speed, bvh, kernels, variants, wave2, accel, gltfms, adaptive, adaptivebound, fragment, flatkinds, denoise, denoiseeval or calibration}"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 nv=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
@@ -187,6 +187,32 @@ case "$part" in
       first=$(set -- ${FRAGMENT_BUILDS}; basename "$1")
       for v in ${FRAGMENT_BUILDS}; do
         cmp -s "$w/$n-$first.pfm" "$w/$n-$(basename "$v").pfm" && echo "$n 16 spp: $(basename "$v") identical to $first" || echo "$n 16 spp: $(basename "$v") DIFFERS from $first"
+      done
+    done
+    ;;
+  flatkinds)
+    # The flat loop kind by kind against the one loop (issue 17): builds (FLAT_BUILDS,
+    # carried) interleaved, FLAT_REPEAT (2) times, on the scenes auto makes flat and on
+    # rooms forced flat (FLAT_SCENES; gen_accel_scenes.py's rooms, carried), both kernels,
+    # 1080p, FRAGMENT_SECONDS (5) each; then 16 spp of each build compared byte for byte.
+    for s in ${FLAT_SCENES:-scenes/reference/scene2.xml}; do
+      n=$(basename "$s" .xml)
+      for ((rep = 0; rep < ${FLAT_REPEAT:-2}; ++rep)); do
+        for k in fragment compute; do
+          for v in ${FLAT_BUILDS:?builds}; do
+            echo "== $(basename "$v") $n $k flat"
+            timeout 120 $v render "$s" --size $S --spp 100000 --seconds "${FRAGMENT_SECONDS:-5}" --kernel $k --accel flat --out /tmp/w.png |
+              grep --line-buffered -E "rendered|non-finite"
+          done
+        done
+      done
+      first=$(set -- ${FLAT_BUILDS}; basename "$1")
+      for k in fragment compute; do
+        for v in ${FLAT_BUILDS}; do
+          timeout 120 $v render "$s" --size 640x360 --spp 16 --spp-per-pass 4 --kernel $k --accel flat --out "$w/$n-$k-$(basename "$v").pfm" >/dev/null
+          cmp -s "$w/$n-$k-$first.pfm" "$w/$n-$k-$(basename "$v").pfm" && echo "$n $k 16 spp: $(basename "$v") identical to $first" ||
+            echo "$n $k 16 spp: $(basename "$v") DIFFERS from $first"
+        done
       done
     done
     ;;

@@ -23,6 +23,15 @@ inline constexpr const char* kAccelNames[] = {"auto", "bvh", "flat"};
 // kFlatPerSah is fitted to the measurements in docs/benchmarks.md ("Fragment-pass steps
 // (issue 17)"), each scene's SAH cost beside its bvh/flat speeds.
 inline constexpr long kFlatMaxConsidered = 64;
+
+// A flat loop over at most this many primitives (planes included) goes kind by kind
+// (shaders/bvh.glsl, HAS_FLAT_ORDER): one loop per kind over that kind's primitives, from
+// an order in uniforms (render/packing.h: flat_order), so that no primitive runs another
+// kind's test. A software rasteriser runs every side of a branch for every lane, so the
+// one loop that dispatches on each primitive's kind ran every kind's test each time
+// (docs/benchmarks.md, "The flat loop kind by kind"). Above it (a loop forced onto a large
+// scene: --accel flat), the one loop stays.
+inline constexpr long kFlatOrderMax = 128;
 inline constexpr double kFlatPerSah = 2.2;
 
 inline bool auto_flat(long bounded, double sah_cost) {

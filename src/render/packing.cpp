@@ -411,6 +411,21 @@ PackedScene pack_scene(const Scene& scene) {
 
 bool AccelCosts::flat() const { return auto_flat(bounded, sah); }
 
+FlatOrder flat_order(const Scene& scene, const PackedScene& p) {
+  FlatOrder o;
+  if (p.prims.count() > kFlatOrderMax || p.prim_shape.size() != size_t(p.prims.count())) return o;
+  for (int g = 0; g < kFlatGroups; ++g) {
+    for (int q = 0; q < p.prims.count(); ++q) {
+      const ShapeKind kind = scene.shapes[size_t(p.prim_shape[size_t(q)])].kind();
+      const BvhRole role = info(kind).bvh;
+      const bool analytic = role == BvhRole::Analytic || role == BvhRole::Unbounded;
+      if ((analytic ? int(kind) : kNumShapeKinds) == g) o.prims.push_back(q);
+    }
+    o.end[size_t(g)] = int(o.prims.size());
+  }
+  return o;
+}
+
 AccelCosts accel_costs(const Scene& scene, const PackedScene* packed) {
   // The count from the scene first, so that the choice is the same with and without a
   // packing at hand (a packing drops degenerate triangles).

@@ -1,12 +1,14 @@
 // Scene -> the record buffers of core/records.h, including the BVH over every bounded
 // primitive (accel/bvh.h) and the primitives in its leaf order.
 #pragma once
+#include <array>
 #include <memory>
 
 #include "accel/accel_choice.h"
 #include "accel/bvh.h"
 #include "core/records.h"
 #include "scene/scene.h"
+#include "shadergen/shadergen.h"
 
 namespace pt {
 
@@ -69,6 +71,16 @@ struct AccelCosts {
   bool flat() const;  // auto_flat(bounded, sah)
 };
 AccelCosts accel_costs(const Scene& scene, const PackedScene* packed = nullptr);
+
+// The flat loop's order kind by kind (shaders/bvh.glsl, HAS_FLAT_ORDER; for a scene of at
+// most kFlatOrderMax primitives): every primitive's index, grouped as kFlatGroups says (an
+// analytic primitive by its shape's kind, a triangle in the last group), in leaf order
+// within a group; group g ends at end[g]. Empty for a larger scene (or a pack_values).
+struct FlatOrder {
+  std::vector<int> prims;
+  std::array<int, kFlatGroups> end{};
+};
+FlatOrder flat_order(const Scene& scene, const PackedScene& p);
 // An edit that moved or resized shape `shape` in place: its primitive record is written
 // again and the boxes of the BVH nodes above it recomputed up to the root
 // (the tree stays: it may bound less tightly than a new build, never wrongly). Analytic

@@ -5,8 +5,10 @@
 // primitive. Checked against the records on the shipped scenes and on a scene
 // of every shape role (planes outside the BVH, lone triangles, one degenerate, mesh instances),
 // packed in one run and in slices.
+#include <algorithm>
 #include <climits>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -138,4 +140,38 @@ TEST_CASE("auto traversal: the loop where it costs at most kFlatPerSah x the BVH
   CHECK(accel_costs(load_scene_file(repo_path("scenes/reference/scene2.xml"))).flat());
   CHECK_FALSE(accel_costs(load_scene_file(repo_path("scenes/reference/scene0.xml"))).flat());
   CHECK_FALSE(accel_costs(load_scene_file(repo_path("scenes/cornell-box.xml"))).flat());
+}
+
+// The flat loop's order (render/packing.h: flat_order; shaders/bvh.glsl HAS_FLAT_ORDER):
+// every primitive once, grouped by what tests it (an analytic primitive by its kind, read
+// back from its record; a triangle last), in leaf order within a group; none for a scene
+// above kFlatOrderMax primitives.
+TEST_CASE("the flat loop's order: kind by kind, leaf order within a kind", "[packing][accel]") {
+  std::string small = kRoles;
+  for (const char* level : {"level=\"3\"", "level=\"2\""}) small.replace(small.find(level), std::strlen(level), "level=\"0\"");
+  const Scene scene = load_scene_text(small, "roles.xml");
+  const PackedScene p = pack_scene(scene);
+  REQUIRE(p.prims.count() <= kFlatOrderMax);
+  const FlatOrder o = flat_order(scene, p);
+  REQUIRE(o.prims.size() == size_t(p.prims.count()));
+  std::vector<int> seen(o.prims.size(), 0);
+  int begin = 0, groups = 0;
+  for (int g = 0; g < kFlatGroups; ++g) {
+    const int end = o.end[size_t(g)];
+    REQUIRE(end >= begin);
+    groups += end > begin;
+    for (int j = begin; j < end; ++j) {
+      const int q = o.prims[size_t(j)];
+      ++seen[size_t(q)];
+      const int tag = int(p.prims.get(q, prim_rec::tag));
+      CHECK((tag >= 0 ? kNumShapeKinds : int(p.prims.get(q, prim_rec::kind))) == g);
+      if (j > begin) CHECK(q > o.prims[size_t(j) - 1]);
+    }
+    begin = end;
+  }
+  CHECK(begin == p.prims.count());
+  CHECK(std::count(seen.begin(), seen.end(), 1) == p.prims.count());
+  CHECK(groups == 4);  // spheres, boxes, planes, triangles (lone and the meshes')
+  const Scene large = load_scene_text(kRoles, "roles.xml");
+  CHECK(flat_order(large, pack_scene(large)).prims.empty());
 }

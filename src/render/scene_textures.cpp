@@ -2,6 +2,7 @@
 #include "render/scene_textures.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 #include "render/environment.h"
@@ -38,6 +39,15 @@ void upload_rows(Texture& t, const RecordBuffer& b, const std::vector<int>& recs
 
 }  // namespace
 
+void bind_flat_order(Program& p, const FlatOrder& o) {
+  if (o.prims.empty()) return;
+  std::array<int, kFlatOrderMax> order{};  // whole ivec4s
+  std::copy(o.prims.begin(), o.prims.end(), order.begin());
+  glUniform4iv(p.loc("u_flat_order"), GLsizei((o.prims.size() + 3) / 4), order.data());
+  glUniform1iv(p.loc("u_flat_end"), GLsizei(o.end.size()), o.end.data());
+  PT_GL_CHECK("u_flat_order");
+}
+
 void SceneTextures::set(const Scene& scene, const PackedScene& p, StagedScene& staged, const MapArray* maps) {
   staged.upload(std::numeric_limits<int>::max());  // nothing left when staged ahead
   shape_tex_ = std::move(staged.shapes);
@@ -59,6 +69,7 @@ void SceneTextures::set(const Scene& scene, const PackedScene& p, StagedScene& s
   num_shapes_ = p.shapes.count();
   num_prims_ = p.prims.count();
   light_shapes_ = p.light_shape;
+  flat_order_ = flat_order(scene, p);
   num_unbounded_ = p.unbounded;
   num_nodes_ = p.nodes.count();
   motion_bound_ = p.motion_bound;
@@ -120,6 +131,7 @@ void SceneTextures::bind(Program& p, RenderMode mode) const {
   p.set("u_vertex_data", int(kVertexUnit));
   p.set("u_num_prims", num_prims_);
   p.set("u_num_unbounded", num_unbounded_);
+  bind_flat_order(p, flat_order_);
   p.set("u_num_nodes", num_nodes_);
   p.set("u_num_lights", num_lights_);
   p.set("u_dot_weight", dot_weight_ ? 1 : 0);

@@ -12,12 +12,15 @@
 #include "gpu/texture.h"
 #include "gpu/texture_array.h"
 #include "render/image_maps.h"
+#include "render/packing.h"
 #include "render/sh.h"
 #include "scene/scene.h"
 
 namespace pt {
 
-struct PackedScene;
+// A HAS_FLAT_ORDER program's uniforms (u_flat_order, u_flat_end) from the order; a program
+// without them ignores them (location -1).
+void bind_flat_order(Program& p, const FlatOrder& o);
 class StagedScene;
 
 class SceneTextures {
@@ -54,6 +57,7 @@ class SceneTextures {
   Texture texinfo_tex_;  // and the maps' texinfo records (GltfPbr: materials/gltf_map.h)
   int num_lights_ = 0, num_unbounded_ = 0, num_nodes_ = 0, num_shapes_ = 0, num_prims_ = 0;
   std::vector<int> light_shapes_;  // the shape of each light record (update_values keeps them)
+  FlatOrder flat_order_;  // the flat loop's order kind by kind (render/packing.h)
   float motion_bound_ = 1.0f;
   bool dot_weight_ = true;
 

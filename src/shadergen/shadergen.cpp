@@ -31,6 +31,7 @@ Features Features::of(const Scene& scene) {
   for (int i : sampled_light_shapes(scene)) f.lights |= 1u << int(scene.shapes[size_t(i)].kind());
   for (const PunctualLight& l : scene.punctual) f.punctual |= 1u << int(l.kind());
   // flat: left to the renderer, whose rule reads the scene's packed BVH (render/packing.h: accel_costs).
+  f.flat_order = scene_primitives(scene) <= kFlatOrderMax;
   return f;
 }
 
@@ -151,6 +152,43 @@ ShaderSource resolve_includes(const std::string& root_text, const std::string& r
   return std::move(r.out);
 }
 
+// Shape kind i is present and tested as an analytic primitive (a plane's too: unbounded).
+static bool analytic_present(const Features& f, int i) {
+  const BvhRole role = kShapeKinds[i].bvh;
+  return f.has(ShapeKind(i)) && (role == BvhRole::Analytic || role == BvhRole::Unbounded);
+}
+
+// The call of kind i's intersection for shape record `s`, shape index `id`.
+static std::string intersect_call(int i, const std::string& s, const std::string& id) {
+  const std::string k = kShapeKinds[i].glsl;
+  return "intersect_" + k + "(" + s + ", " + id + ", r, " + (kShapeKinds[i].per_ray ? "pre." + k + ", " : std::string()) + "h)";
+}
+
+// The flat loop kind by kind (HAS_FLAT_ORDER; bvh.glsl declares flat_groups): one loop per
+// group of render/packing.h's flat_order, in its order, each with its kind's test alone; a
+// shadow query (any_hit) ends at its first hit. (No return or break inside the loops:
+// SwiftShader pays for the structure those make.)
+static std::string flat_groups(const Features& f) {
+  std::string g = "uniform ivec4 u_flat_order[" + std::to_string(kFlatOrderMax / 4) +
+                  "];  // primitive indices, group by group (render/packing.h: flat_order)\n"
+                  "uniform int u_flat_end[" + std::to_string(kFlatGroups) + "];  // where each group ends in it\n"
+                  "void flat_groups(Ray r, RayPre pre, bool any_hit, int skip, inout Hit h) {\n";
+  auto loop = [](int group, const std::string& body) {
+    return "  for (int j = " + (group == 0 ? std::string("0") : "u_flat_end[" + std::to_string(group - 1) + "]") +
+           "; j < u_flat_end[" + std::to_string(group) + "] && !(any_hit && h.id >= 0); ++j) {\n"
+           "    int i = u_flat_order[j >> 2][j & 3];\n    PrimRec p = load_prim(i);\n    COUNT_OPS(g_prim_tests, 1);\n" + body + "  }\n";
+  };
+  // The unbounded kinds (planes) first, as they come first in leaf order (where two
+  // surfaces meet at the same t the first tested wins: so the BVH's result stays).
+  for (int pass = 0; pass < 2; ++pass)
+    for (int i = 0; i < kNumShapeKinds; ++i)
+      if (analytic_present(f, i) && (kShapeKinds[i].bvh == BvhRole::Unbounded) == (pass == 0))
+        g += loop(i, "    float before = h.t;\n    if (-1 - p.tag != skip) " + intersect_call(i, "prim_shape(p)", "-1 - p.tag") +
+                       ";\n    if (h.t < before) h.prim = i;\n");
+  g += "#ifdef HAS_PRIM_TRIANGLES\n" + loop(kNumShapeKinds, "    bvh_triangle(i, p, r, pre, skip, h);\n") + "#endif\n";
+  return g + "}\n";
+}
+
 // The punctual light kinds present (lights/kinds.h): their snippets and
 // punctual_sample(l, p, wi, dist, e), dispatching on the light record's shape = -1 - kind.
 static std::string punctual_dispatch(const Features& f) {
@@ -194,6 +232,7 @@ std::string generate_prelude(const Features& features) {
   if (f.aux) g += "#define PT_AUX 1\n";
   if (f.adaptive) g += "#define PT_ADAPTIVE 1\n";
   if (f.flat) g += "#define HAS_FLAT 1\n";
+  if (f.flat && f.flat_order) g += "#define HAS_FLAT_ORDER 1\n";
   if (f.count_ops) g += "#define PT_COUNT_OPS 1\n";
   g += "#include \"common.glsl\"\n";
   g += glsl_record(shape_layout()) + glsl_record(material_glsl()) + glsl_record(light_layout());
@@ -241,16 +280,13 @@ std::string generate_prelude(const Features& features) {
     if (f.has(ShapeKind(i)) && kShapeKinds[i].per_ray)
       g += "  p." + std::string(kShapeKinds[i].glsl) + " = prepare_" + kShapeKinds[i].glsl + "(r);\n";
   // The primitive carries the fields of the shape record that intersection reads.
-  g += "  return p;\n}\nvoid intersect_analytic(PrimRec p, Ray r, RayPre pre, inout Hit h) {\n  int id = -1 - p.tag;\n"
-       "  ShapeRec s;\n  s.kind = p.kind;\n";
+  g += "  return p;\n}\nShapeRec prim_shape(PrimRec p) {\n  ShapeRec s;\n  s.kind = p.kind;\n";
   for (int i = 0; i < prim_rec::kAnalyticSlots; ++i)
     g += "  s." + std::string(shape_rec::kPayload[i]->name) + " = p." + prim_rec::kAnalytic[i]->name + ";\n";
-  for (int i = 0; i < kNumShapeKinds; ++i) {
-    const BvhRole role = kShapeKinds[i].bvh;
-    if (!f.has(ShapeKind(i)) || (role != BvhRole::Analytic && role != BvhRole::Unbounded)) continue;
-    g += std::string("  if (s.kind == SHAPE_") + upper(kShapeKinds[i].glsl) + ") intersect_" + kShapeKinds[i].glsl + "(s, id, r, " +
-         (kShapeKinds[i].per_ray ? "pre." + std::string(kShapeKinds[i].glsl) + ", " : std::string()) + "h);\n";
-  }
+  g += "  return s;\n}\nvoid intersect_analytic(PrimRec p, Ray r, RayPre pre, inout Hit h) {\n  int id = -1 - p.tag;\n"
+       "  ShapeRec s = prim_shape(p);\n";
+  for (int i = 0; i < kNumShapeKinds; ++i)
+    if (analytic_present(f, i)) g += "  if (s.kind == SHAPE_" + upper(kShapeKinds[i].glsl) + ") " + intersect_call(i, "s", "id") + ";\n";
   g += "}\n";
   if (f.has(MaterialFeature::HitCuts)) {  // the traversal asks the kinds that cut hits (bvh.glsl)
     g += "bool hit_present(int shape, int prim, Ray r, Hit h) {\n  MaterialRec m = load_material(load_shape(shape).material);\n";
@@ -260,6 +296,7 @@ std::string generate_prelude(const Features& features) {
     g += "  return true;\n}\n";
   }
   g += "#include \"bvh.glsl\"\n";
+  if (f.flat && f.flat_order) g += flat_groups(f);
   if (f.has(MaterialFeature::Media)) {  // the media the path tracks (integrator.glsl): the kinds that bound one
     g += "bool material_medium(MaterialRec m, out vec3 sigma) {\n";
     for (int i = 0; i < kNumMaterialKinds; ++i)

@@ -14,6 +14,10 @@
 
 namespace pt {
 
+// Each group of the flat loop by kind (HAS_FLAT_ORDER; render/packing.h: flat_order): the
+// analytic primitives of each shape kind, in kind order, then every triangle.
+inline constexpr int kFlatGroups = kNumShapeKinds + 1;
+
 struct Features {
   uint32_t shapes = 0;     // bit i: ShapeKind i is present
   uint32_t materials = 0;  // bit i: MaterialKind i is present
@@ -40,6 +44,10 @@ struct Features {
   // The camera pass counts the traversal's work (box tests, primitive tests) into the
   // statistics' z and w instead of the variance (`render --count-ops`); a renderer setting.
   bool count_ops = false;
+  // The scene has at most kFlatOrderMax primitives (accel/accel_choice.h): a flat program
+  // loops kind by kind over them (HAS_FLAT_ORDER). Features::of sets it; it only counts
+  // with flat (in the key too: a BVH program is the same for every count).
+  bool flat_order = false;
   bool has(ShapeKind k) const { return shapes >> int(k) & 1u; }
   bool has(MaterialKind k) const { return materials >> int(k) & 1u; }
   bool has_light(ShapeKind k) const { return lights >> int(k) & 1u; }
@@ -56,7 +64,7 @@ struct Features {
     std::string k;
     auto put = [&k](uint32_t v) { k.append(reinterpret_cast<const char*>(&v), sizeof v); };
     put(shapes), put(materials), put(lights), put(punctual), put(material_features);
-    put(uint32_t(env_map) | uint32_t(motion) << 1 | uint32_t(compute) << 2 | uint32_t(aux) << 3 | uint32_t(adaptive) << 4 | uint32_t(flat) << 5 | uint32_t(count_ops) << 6 |
+    put(uint32_t(env_map) | uint32_t(motion) << 1 | uint32_t(compute) << 2 | uint32_t(aux) << 3 | uint32_t(adaptive) << 4 | uint32_t(flat) << 5 | uint32_t(count_ops) << 6 | uint32_t(flat && flat_order) << 7 |
         uint32_t(mode) << 8);
     return k;
   }
@@ -66,10 +74,9 @@ struct Features {
 // mesh triangle (the rule of accel/accel_choice.h counts these).
 long scene_primitives(const Scene& scene);
 // A field added to Features must go into key() too (else two programs share a cache slot).
-// Five words, the mode and seven flags (env_map .. count_ops, with 1 byte of padding): a new
-// word changes the size; an eighth flag would fit the padding, so a new flag must be added
-// to key() by hand.
-static_assert(sizeof(Features) == 5 * sizeof(uint32_t) + sizeof(RenderMode) + 7 + 1,
+// Five words, the mode and eight flags (env_map .. flat_order): a new word or a ninth flag
+// changes the size.
+static_assert(sizeof(Features) == 5 * sizeof(uint32_t) + sizeof(RenderMode) + 8,
               "a new field of Features: add it to key() and to this count");
 static_assert(kNumShapeKinds <= 32 && kNumLightKinds <= 32 && kNumMaterialKinds <= 32 && kNumMaterialFeatures <= 32,
               "Features: one bit per kind in 32");
