@@ -166,8 +166,7 @@ static std::string intersect_call(int i, const std::string& s, const std::string
 
 // The flat loop kind by kind (HAS_FLAT_ORDER; bvh.glsl declares flat_groups): one loop per
 // group of render/packing.h's flat_order, in its order, each with its kind's test alone; a
-// shadow query (any_hit) ends at its first hit. (No return or break inside the loops:
-// SwiftShader pays for the structure those make.)
+// shadow query (any_hit) ends at its first hit, through the loops' condition.
 static std::string flat_groups(const Features& f) {
   std::string g = "uniform ivec4 u_flat_order[" + std::to_string(kFlatOrderMax / 4) +
                   "];  // primitive indices, group by group (render/packing.h: flat_order)\n"
