@@ -141,9 +141,7 @@ void App::render_passes(double now_ms, double dt_ms) {
   // pixel drawn (one draw's worth in a frame without draws), so its share of a frame
   // follows the draw size the pacer chose: at the smallest draw in SwiftShader, 4 x 128
   // pixels of scene2 (~13 us each), about as long as the draw (a unit ~0.7 us).
-  const double draw_pixels = double(settings_.band_rows > 0 ? settings_.band_rows : renderer_->height()) *
-                             (settings_.band_columns > 0 ? settings_.band_columns : renderer_->width());
-  renderer_->advance_denoiser(kDenoiseUnits * draw_pixels * std::max(done, 1));
+  renderer_->advance_denoiser(kDenoiseUnits * draw_pixels() * std::max(done, 1));
   if (!renderer_->converged()) done_ms_ = -1.0;  // a raised limit resumes the clock
   else if (done_ms_ < 0) done_ms_ = now_ms;
   if (done == 0) {

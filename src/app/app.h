@@ -82,6 +82,8 @@ class App {
   // Samples, scene, error, loads and the loading fields of the stats, without reading the
   // image back: cheap enough to poll every frame (ptLoadStatus()).
   std::string load_status_json() const;
+  // The pixels of one draw at the size the pacer chose (bands of rows, tiles of columns).
+  double draw_pixels() const;
   // The current view as URL parameters (scene, cam, bounces, tonemap, exposure): a link
   // with them reproduces it. The page keeps its address up to date with this.
   std::string view_query() const;

@@ -251,10 +251,15 @@ std::string App::load_fields() const {
   return j;
 }
 
+double App::draw_pixels() const {
+  return double(settings_.band_rows > 0 ? settings_.band_rows : renderer_->height()) *
+         (settings_.band_columns > 0 ? settings_.band_columns : renderer_->width());
+}
+
 std::string App::load_status_json() const {
   return "{\"samples\":" + std::to_string(renderer_->samples()) + ",\"paths\":" + json_number(renderer_->paths()) +
          ",\"presents\":" + std::to_string(presents_) + ",\"compileMs\":" + json_number(renderer_->compile_ms()) + ",\"scene\":" + json_string(scene_.path) +
-         ",\"accel\":" + (renderer_->using_flat() ? "\"flat\"" : "\"bvh\"") +
+         ",\"accel\":" + (renderer_->using_flat() ? "\"flat\"" : "\"bvh\"") + ",\"drawPixels\":" + json_number(draw_pixels()) +
          ",\"error\":" + (error_ ? json_string(*error_) : std::string("null")) + ",\"loads\":" + std::to_string(loads_) + "," +
          load_fields() + "," + error_fields() + "}";
 }
