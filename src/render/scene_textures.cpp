@@ -40,10 +40,12 @@ void upload_rows(Texture& t, const RecordBuffer& b, const std::vector<int>& recs
 }  // namespace
 
 void bind_flat_order(Program& p, const FlatOrder& o) {
-  if (o.prims.empty()) return;
+  // Always, an empty order too: its ends then say no group has a primitive, rather than
+  // leaving another scene's in a program they share. (Not reachable through the loader,
+  // which refuses a zero-area triangle, the one shape a packing can drop.)
   std::array<int, kFlatOrderMax> order{};  // whole ivec4s
   std::copy(o.prims.begin(), o.prims.end(), order.begin());
-  glUniform4iv(p.loc("u_flat_order"), GLsizei((o.prims.size() + 3) / 4), order.data());
+  glUniform4iv(p.loc("u_flat_order"), GLsizei(std::max<size_t>(1, (o.prims.size() + 3) / 4)), order.data());
   glUniform1iv(p.loc("u_flat_end"), GLsizei(o.end.size()), o.end.data());
   PT_GL_CHECK("u_flat_order");
 }

@@ -18,7 +18,8 @@
 
 namespace pt {
 
-// A HAS_FLAT_ORDER program's uniforms (u_flat_order, u_flat_end) from the order; a program
+// A HAS_FLAT_ORDER program's uniforms (u_flat_order, u_flat_end) from the order (every
+// bind: uniforms are the program's, and programs are shared between scenes); a program
 // without them ignores them (location -1).
 void bind_flat_order(Program& p, const FlatOrder& o);
 class StagedScene;
